@@ -1,0 +1,85 @@
+// Copyright (c) 2026 The Penrose_Delaunay_triangulation_2 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Streaming traversal of the tile tree: depth first, with a fixed-size stack,
+// so that sampling alone needs memory for its output only.
+
+#ifndef CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_DEPTH_FIRST_SAMPLING_H
+#define CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_DEPTH_FIRST_SAMPLING_H
+
+#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Sampling_context.h>
+
+#include <array>
+#include <cstdint>
+
+namespace CGAL {
+namespace internal {
+namespace Penrose {
+
+// Calls visit(x, y, importance, birth) for every sample vertex of the tree,
+// in depth-first order, when the tile that creates it is subdivided.
+template <class Visitor>
+void for_each_sample_depth_first(const Sampling_context& context, Visitor&& visit)
+{
+  struct Node
+  {
+    double x[3], y[3], importance[3];
+    std::uint64_t code, threshold;
+    Tile_type type;
+    std::uint8_t direction, level;
+  };
+  // each subdivision pops one node and pushes at most three
+  std::array<Node, 2 * max_level + 8> stack;
+  std::size_t top = 0;
+
+  Node& root = stack[top++];
+  for(int i = 0; i < 3; ++i) {
+    root.x[i] = context.root_x(i);
+    root.y[i] = context.root_y(i);
+    root.importance[i] = context.importance(root.x[i], root.y[i]);
+  }
+  root.code = 0; root.threshold = 0; root.type = FAT_F; root.direction = 15; root.level = 0;
+
+  double x[5], y[5], importance[5];
+  while(top > 0) {
+    const Node t = stack[--top];
+    if(!context.should_refine(t.level, t.x, t.y, t.importance)) continue;
+    const Subdivision_rule& r = rule(t.type);
+    for(int i = 0; i < 3; ++i) { x[i] = t.x[i]; y[i] = t.y[i]; importance[i] = t.importance[i]; }
+    const int child_level = t.level + 1;
+    for(int k = 0; k < r.number_of_new_vertices; ++k) {
+      const New_vertex_rule& nv = r.new_vertices[k];
+      const int v = 3 + k;
+      x[v] = x[nv.near_corner] + split_fraction * (x[nv.far_corner] - x[nv.near_corner]);
+      y[v] = y[nv.near_corner] + split_fraction * (y[nv.far_corner] - y[nv.near_corner]);
+      importance[v] = context.importance(x[v], y[v]);
+      if(nv.is_sample) {
+        const Sample_birth b = { t.code * 4 + r.sample_code_pair,
+                                 t.threshold + pair_weight(r.sample_code_pair, child_level),
+                                 static_cast<std::uint8_t>(child_level),
+                                 add_direction(t.direction, r.sample_direction_step) };
+        visit(x[v], y[v], importance[v], b);
+      }
+    }
+    for(int c = r.number_of_children - 1; c >= 0; --c) {
+      const Child_rule& cr = r.children[c];
+      Node& n = stack[top++];
+      for(int i = 0; i < 3; ++i) {
+        n.x[i] = x[cr.corners[i]];
+        n.y[i] = y[cr.corners[i]];
+        n.importance[i] = importance[cr.corners[i]];
+      }
+      n.code = t.code * 4 + cr.code_pair;
+      n.threshold = t.threshold + pair_weight(cr.code_pair, child_level);
+      n.type = cr.type;
+      n.direction = add_direction(t.direction, cr.direction_step);
+      n.level = static_cast<std::uint8_t>(child_level);
+    }
+  }
+}
+
+} // namespace Penrose
+} // namespace internal
+} // namespace CGAL
+
+#endif // CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_DEPTH_FIRST_SAMPLING_H

@@ -1,0 +1,212 @@
+// Copyright (c) 2026 The Penrose_Delaunay_triangulation_2 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// What every traversal of the tile tree shares: the region, the importance
+// field, the root tile, when a tile is refined and where a sample lands.
+
+#ifndef CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_SAMPLING_CONTEXT_H
+#define CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_SAMPLING_CONTEXT_H
+
+#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Correction_table.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Fibonacci_code.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Penrose_rules.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+namespace CGAL {
+namespace internal {
+namespace Penrose {
+
+// The data of the A tile born at a vertex, fixed at birth.
+struct Sample_birth
+{
+  std::uint64_t code;      // F-code of the A tile at its birth level
+  std::uint64_t threshold; // Fibonacci value of that code
+  std::uint8_t level;
+  std::uint8_t direction;
+};
+
+// A sample that passed its threshold, with the data of its leaf tile.
+struct Placed_sample
+{
+  double x, y;             // corrected position
+  double reference_x, reference_y;
+  double importance;
+  std::uint64_t threshold;
+  std::uint64_t leaf_code;
+  int leaf_level;
+  std::uint8_t leaf_direction;
+  unsigned structural_index;
+  unsigned importance_index;
+};
+
+// Number of subdivision levels applied everywhere before adaptivity (C.6).
+constexpr int uniform_levels = 6;
+// Structural bits reported with each sample when no table is in use.
+constexpr int default_structural_bits = 6;
+
+class Sampling_context
+{
+public:
+  typedef std::function<double(double, double)> Density;
+  // upper bound of the density over the box [x0, x1] x [y0, y1]
+  typedef std::function<double(double, double, double, double)> Density_bound;
+
+  Sampling_context(double xmin, double ymin, double xmax, double ymax,
+                   Density density, Density_bound bound,
+                   double points_per_density_unit, const Correction_table* table)
+    : xmin_(xmin), ymin_(ymin), xmax_(xmax), ymax_(ymax),
+      density_(std::move(density)), bound_(std::move(bound)), table_(table)
+  {
+    check_region(xmin, ymin, xmax, ymax);
+    root_scale_ = 2. * (std::max)(xmax - xmin, ymax - ymin);
+    const double phi = golden_ratio;
+    for(int l = 0; l < max_level + 2; ++l) scale_[l] = root_scale_ / std::pow(phi, l);
+    // C.8: samples per unit area = importance / root_scale^2 * sqrt 5 / (phi^4 sin36 + phi sin72)
+    const double deg = 3.14159265358979323846 / 180.;
+    const double k = std::sqrt(5.) / (std::pow(phi, 4) * std::sin(36 * deg) + phi * std::sin(72 * deg));
+    importance_per_density_ = points_per_density_unit * root_scale_ * root_scale_ / k;
+    const Direction_table& u = directions();
+    root_x_[0] = xmin - root_scale_ * (phi * phi / 2. - 0.25);
+    root_y_[0] = ymin - root_scale_ / 8.;
+    root_x_[1] = root_x_[0] + phi * phi * root_scale_ * u.x[15];
+    root_y_[1] = root_y_[0] + phi * phi * root_scale_ * u.y[15];
+    root_x_[2] = root_x_[0] + phi * root_scale_ * u.x[17];
+    root_y_[2] = root_y_[0] + phi * root_scale_ * u.y[17];
+    // A sample never moves more than this many scales of the tile it is born in.
+    margin_factor_ = (std::max)(1., table_ == nullptr ? 0. : table_->max_length());
+  }
+
+  static void check_region(double xmin, double ymin, double xmax, double ymax)
+  {
+    if(!(std::isfinite(xmin) && std::isfinite(ymin) && std::isfinite(xmax) && std::isfinite(ymax)))
+      throw std::invalid_argument("Penrose_importance_sampler: the region has a non-finite bound");
+    if(!(xmax > xmin && ymax > ymin))
+      throw std::invalid_argument("Penrose_importance_sampler: the region is empty or degenerate");
+  }
+
+  double xmin() const { return xmin_; }
+  double ymin() const { return ymin_; }
+  double xmax() const { return xmax_; }
+  double ymax() const { return ymax_; }
+  double root_scale() const { return root_scale_; }
+  double scale(int level) const { return scale_[level]; }
+  double root_x(int i) const { return root_x_[i]; }
+  double root_y(int i) const { return root_y_[i]; }
+  double importance_per_density() const { return importance_per_density_; }
+  const Correction_table* correction_table() const { return table_; }
+
+  // Importance at (x, y), read at the nearest point of the region: the density
+  // is never evaluated outside the region, and tiles that straddle its border
+  // see the density inside it.
+  double importance(double x, double y) const { return density(x, y) * importance_per_density_; }
+
+  // The unscaled density, checked, at the nearest point of the region.
+  double density(double x, double y) const
+  {
+    const double cx = clamp_x(x), cy = clamp_y(y);
+    return checked(density_(cx, cy), cx, cy);
+  }
+
+  bool should_refine(int level, const double* x, const double* y, const double* importance) const
+  {
+    if(level < uniform_levels) return true;
+    const double bx0 = (std::min)({x[0], x[1], x[2]}), bx1 = (std::max)({x[0], x[1], x[2]});
+    const double by0 = (std::min)({y[0], y[1], y[2]}), by1 = (std::max)({y[0], y[1], y[2]});
+    const double m = margin_factor_ * scale_[level];
+    if(bx1 < xmin_ - m || bx0 > xmax_ + m || by1 < ymin_ - m || by0 > ymax_ + m) return false;
+    double imax;
+    if(bound_) {
+      const double cx0 = clamp_x(bx0), cx1 = clamp_x(bx1), cy0 = clamp_y(by0), cy1 = clamp_y(by1);
+      imax = checked(bound_(cx0, cy0, cx1, cy1), 0.5 * (cx0 + cx1), 0.5 * (cy0 + cy1))
+             * importance_per_density_;
+    } else {
+      imax = (std::max)({importance[0], importance[1], importance[2],
+                         this->importance((x[0] + x[1] + x[2]) / 3., (y[0] + y[1] + y[2]) / 3.)});
+    }
+    if(!needs_level_above(imax, level)) return false;
+    if(level >= max_level)
+      throw std::length_error("Penrose_importance_sampler: the density needs more than "
+                              + std::to_string(max_level) + " subdivision levels");
+    return true;
+  }
+
+  // Threshold test (C.7), then correction (C.9). Returns false for a sample
+  // that is not active; `s` is filled in either way for an active one.
+  bool activate(double x, double y, double importance, const Sample_birth& b, Placed_sample& s) const
+  {
+    if(!(importance >= static_cast<double>(b.threshold))) return false;
+    const auto& li = fibonacci().level_importance;
+    int leaf = (std::max)(1, int(b.level));
+    while(leaf < max_level && importance >= li[leaf + 1]) ++leaf;
+    const int shift = leaf - b.level;
+    s.reference_x = x; s.reference_y = y;
+    s.importance = importance;
+    s.threshold = b.threshold;
+    s.leaf_level = leaf;
+    s.leaf_code = b.code << (2 * shift);
+    s.leaf_direction = static_cast<std::uint8_t>((b.direction + 10 * shift) % 20);
+    const int bits = table_ ? table_->structural_bits : default_structural_bits;
+    const unsigned bins = table_ ? table_->importance_bins : 21u;
+    s.structural_index = fibonacci_value(s.leaf_code & ((std::uint64_t(1) << bits) - 1), bits);
+    s.importance_index = importance_index(importance, bins);
+    s.x = x; s.y = y;
+    if(table_ != nullptr && table_->vectors != nullptr) {
+      const float* ab = table_->at(s.importance_index, s.structural_index);
+      const Direction_table& u = directions();
+      const int d = s.leaf_direction, e = (d + 5) % 20;
+      const double sl = scale_[leaf];
+      s.x = x + sl * (ab[0] * u.x[d] + ab[1] * u.x[e]);
+      s.y = y + sl * (ab[0] * u.y[d] + ab[1] * u.y[e]);
+    }
+    return true;
+  }
+
+  bool contains(double x, double y) const
+  {
+    return x >= xmin_ && x <= xmax_ && y >= ymin_ && y <= ymax_;
+  }
+
+  double checked(double v, double x, double y) const
+  {
+    if(v >= 0. && v < std::numeric_limits<double>::infinity() &&
+       v * importance_per_density_ < fibonacci().level_importance[max_level + 1])
+      return v;
+    std::ostringstream msg;
+    msg.precision(17);
+    msg << "Penrose_importance_sampler: the density at (" << x << ", " << y << ") is " << v;
+    if(v >= 0. && v < std::numeric_limits<double>::infinity())
+      msg << ", more than the " << max_level << " levels of the tile tree can represent";
+    else
+      msg << "; it must be finite and non-negative";
+    throw std::invalid_argument(msg.str());
+  }
+
+private:
+  double clamp_x(double x) const { return (std::min)((std::max)(x, xmin_), xmax_); }
+  double clamp_y(double y) const { return (std::min)((std::max)(y, ymin_), ymax_); }
+
+  double xmin_, ymin_, xmax_, ymax_;
+  Density density_;
+  Density_bound bound_;
+  const Correction_table* table_;
+  double root_scale_;
+  double importance_per_density_;
+  double margin_factor_;
+  std::array<double, max_level + 2> scale_;
+  std::array<double, 3> root_x_, root_y_;
+};
+
+} // namespace Penrose
+} // namespace internal
+} // namespace CGAL
+
+#endif // CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_SAMPLING_CONTEXT_H

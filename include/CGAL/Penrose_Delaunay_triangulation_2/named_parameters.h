@@ -1,0 +1,60 @@
+// Copyright (c) 2026 The Penrose_Delaunay_triangulation_2 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Named parameters of this package that CGAL 5.5 does not define. Being
+// outside CGAL's list, they start a chain (for example
+// `parameters::use_correction_vectors(false).number_of_output_points(n)`)
+// and cannot be appended to one; to combine them, pass the rest of the chain
+// as a second argument: `use_correction_vectors(false, density_upper_bound(b))`.
+
+#ifndef CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_NAMED_PARAMETERS_H
+#define CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_NAMED_PARAMETERS_H
+
+#include <CGAL/Named_function_parameters.h>
+
+namespace CGAL {
+namespace internal_np {
+enum use_correction_vectors_t { use_correction_vectors };
+enum density_upper_bound_t { density_upper_bound };
+} // namespace internal_np
+
+namespace parameters {
+
+/// \ingroup PkgPenroseDelaunayTriangulation2NamedParameters
+/// Whether the sampler moves each sample by its correction vector (default `true`).
+inline Named_function_parameters<bool, internal_np::use_correction_vectors_t>
+use_correction_vectors(bool b)
+{
+  return Named_function_parameters<bool, internal_np::use_correction_vectors_t>(b);
+}
+
+/// \ingroup PkgPenroseDelaunayTriangulation2NamedParameters
+/// A callable `double(const Iso_rectangle_2&)` that bounds the density from
+/// above over a box: with it, no feature of the density is missed.
+template <class Bound>
+Named_function_parameters<Bound, internal_np::density_upper_bound_t>
+density_upper_bound(const Bound& b)
+{
+  return Named_function_parameters<Bound, internal_np::density_upper_bound_t>(b);
+}
+
+/// `use_correction_vectors(b)` followed by the parameters of `np`.
+template <class T, class Tag, class Base>
+Named_function_parameters<bool, internal_np::use_correction_vectors_t, Named_function_parameters<T, Tag, Base>>
+use_correction_vectors(bool b, const Named_function_parameters<T, Tag, Base>& np)
+{
+  return {b, np};
+}
+
+/// `density_upper_bound(b)` followed by the parameters of `np`.
+template <class Bound, class T, class Tag, class Base>
+Named_function_parameters<Bound, internal_np::density_upper_bound_t, Named_function_parameters<T, Tag, Base>>
+density_upper_bound(const Bound& b, const Named_function_parameters<T, Tag, Base>& np)
+{
+  return {b, np};
+}
+
+} // namespace parameters
+} // namespace CGAL
+
+#endif // CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_NAMED_PARAMETERS_H

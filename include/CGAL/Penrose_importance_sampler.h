@@ -1,0 +1,281 @@
+// Copyright (c) 2026 The Penrose_Delaunay_triangulation_2 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_PENROSE_IMPORTANCE_SAMPLER_H
+#define CGAL_PENROSE_IMPORTANCE_SAMPLER_H
+
+#include <CGAL/Penrose_tile_tree.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/named_parameters.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Depth_first_sampling.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Sampling_context.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/internal/correction_vectors.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/number_utils.h>
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+namespace CGAL {
+
+/*!
+\ingroup PkgPenroseDelaunayTriangulation2Ref
+
+The importance sampler of Ostromoukhov, Donohue and Jodoin (SIGGRAPH 2004):
+a Penrose tiling is subdivided where the density demands it, the sample
+vertices of its tiles are thresholded with their F-codes read as Fibonacci
+numbers, and the survivors are moved by correction vectors that an offline
+Lloyd relaxation computed. The result is a blue-noise point set whose local
+density follows a density function, in time linear in its size.
+
+The density is a number of points per unit area. Without further parameters
+the sampler returns about the integral of the density over the region; the
+named parameter `number_of_output_points` rescales the density to a target
+count instead.
+
+The sampler is deterministic: the same region, density and parameters give
+the same points, bit for bit.
+
+\tparam Traits a model of `PenroseImportanceSamplerTraits_2`; the default is
+`Exact_predicates_inexact_constructions_kernel`, and every CGAL kernel is a model.
+
+\sa `Penrose_tile_tree`
+\sa `Penrose_Delaunay_triangulation_2`
+*/
+template <class Traits = Exact_predicates_inexact_constructions_kernel>
+class Penrose_importance_sampler
+{
+public:
+  /// \name Types
+  /// @{
+  typedef Traits Geom_traits;
+  typedef typename Traits::FT FT;
+  typedef typename Traits::Point_2 Point_2;
+  typedef typename Traits::Iso_rectangle_2 Iso_rectangle_2;
+
+  /// A sample with the data of its leaf tile.
+  struct Sample
+  {
+    Point_2 point;              ///< the position, correction applied
+    Point_2 reference_point;    ///< the tile vertex, before correction
+    double importance;          ///< importance at the reference point
+    int level;                  ///< level of the A/B leaf tile
+    std::uint64_t f_code;       ///< F-code of the leaf tile
+    std::uint64_t threshold;    ///< Fibonacci value of the F-code
+    unsigned structural_index;  ///< column of the correction table
+    unsigned importance_index;  ///< row of the correction table
+  };
+  /// @}
+
+  /// \name Creation
+  /// @{
+
+  /*!
+  Prepares sampling `density` over `region`.
+
+  \tparam Density a callable `double(const Point_2&)` (any return type
+          convertible with `CGAL::to_double()`); it is evaluated inside the
+          closed region only.
+  \param np an optional sequence of named parameters among the ones below.
+
+  \cgalNamedParamsBegin
+    \cgalParamNBegin{number_of_output_points}
+      \cgalParamDescription{the number of points wanted: the density is scaled so that its integral over the region is this number}
+      \cgalParamType{`std::size_t`}
+      \cgalParamDefault{the integral of the density}
+    \cgalParamNEnd
+    \cgalParamNBegin{density_control_factor}
+      \cgalParamDescription{a factor applied to the density (after `number_of_output_points`)}
+      \cgalParamType{`double`}
+      \cgalParamDefault{`1`}
+    \cgalParamNEnd
+    \cgalParamNBegin{maximum_number}
+      \cgalParamDescription{the largest expected number of points accepted; a larger request throws `std::length_error` before anything is allocated}
+      \cgalParamType{`std::size_t`}
+      \cgalParamDefault{\f$10^8\f$}
+    \cgalParamNEnd
+    \cgalParamNBegin{use_correction_vectors}
+      \cgalParamDescription{whether samples are moved by their correction vectors}
+      \cgalParamType{`bool`}
+      \cgalParamDefault{`true`}
+    \cgalParamNEnd
+    \cgalParamNBegin{density_upper_bound}
+      \cgalParamDescription{a callable `double(const Iso_rectangle_2&)` that bounds the density from above over a box. Tiles are then refined as the bound demands, so that no feature of the density is missed. Without it, the density is probed at the corners and the centroid of each tile, as in the 2004 system: a feature narrower than a tile that falls between the probes is sampled at the density around it.}
+      \cgalParamType{a callable}
+      \cgalParamDefault{none: probes}
+    \cgalParamNEnd
+    \cgalParamNBegin{geom_traits}
+      \cgalParamDescription{an instance of the traits class}
+      \cgalParamType{`Traits`}
+      \cgalParamDefault{`Traits()`}
+    \cgalParamNEnd
+  \cgalNamedParamsEnd
+
+  \throws std::invalid_argument if the region is empty, degenerate or not
+          finite, or if the density is negative, NaN or infinite where it is
+          evaluated (the message names the point and the value).
+  \throws std::length_error if more than `maximum_number` points are expected.
+  */
+  template <class Density, class NamedParameters = parameters::Default_named_parameters>
+  Penrose_importance_sampler(const Iso_rectangle_2& region, const Density& density,
+                             const NamedParameters& np = parameters::default_values())
+    : traits_(parameters::choose_parameter(parameters::get_parameter(np, internal_np::geom_traits), Traits())),
+      region_(region)
+  {
+    using parameters::choose_parameter;
+    using parameters::get_parameter;
+    using parameters::is_default_parameter;
+
+    const double x0 = coordinate_x(region_min()), y0 = coordinate_y(region_min());
+    const double x1 = coordinate_x(region_max()), y1 = coordinate_y(region_max());
+    internal::Penrose::Sampling_context::check_region(x0, y0, x1, y1);
+
+    auto construct_point = traits_.construct_point_2_object();
+    std::function<double(double, double)> density_xy =
+      [density, construct_point](double x, double y) {
+        return CGAL::to_double(density(construct_point(FT(x), FT(y))));
+      };
+
+    std::function<double(double, double, double, double)> bound_xy;
+    assign_bound(bound_xy, get_parameter(np, internal_np::density_upper_bound));
+
+    const bool correct = choose_parameter(get_parameter(np, internal_np::use_correction_vectors), true);
+    const double factor = choose_parameter(get_parameter(np, internal_np::density_control_factor), 1.);
+    const std::size_t maximum = choose_parameter(get_parameter(np, internal_np::maximum_number),
+                                                 std::size_t(100000000));
+    if(!(factor >= 0. && factor < std::numeric_limits<double>::infinity()))
+      throw std::invalid_argument("Penrose_importance_sampler: density_control_factor must be finite and non-negative");
+
+    // The integral is measured on the density alone, with the checks of the
+    // sampler, before anything large is allocated.
+    internal::Penrose::Sampling_context probe(x0, y0, x1, y1, density_xy, nullptr, 1., nullptr);
+    integral_ = integrate(probe, x0, y0, x1, y1);
+
+    double scale = factor;
+    if(!is_default_parameter<NamedParameters, internal_np::number_of_output_points_t>::value) {
+      const double n = static_cast<double>(choose_parameter(get_parameter(np, internal_np::number_of_output_points), std::size_t(0)));
+      if(n > 0. && !(integral_ > 0.))
+        throw std::invalid_argument("Penrose_importance_sampler: a number of points was asked for, but the density is zero over the region");
+      scale *= integral_ > 0. ? n / integral_ : 0.;
+    }
+    density_scale_ = scale;
+    expected_ = scale * integral_;
+    if(expected_ > static_cast<double>(maximum))
+      throw std::length_error("Penrose_importance_sampler: about " + std::to_string(expected_)
+                              + " points expected, more than maximum_number (" + std::to_string(maximum) + ")");
+
+    context_ = std::make_shared<internal::Penrose::Sampling_context>(
+      x0, y0, x1, y1, density_xy, bound_xy, scale,
+      correct ? &internal::Penrose::default_correction_table() : nullptr);
+  }
+  /// @}
+
+  /// \name Sampling
+  /// @{
+
+  /// Writes the sample points into `out`, in depth-first order of the tile tree.
+  template <class OutputIterator>
+  OutputIterator operator()(OutputIterator out) const
+  {
+    auto construct_point = traits_.construct_point_2_object();
+    for_each_placed([&](const internal::Penrose::Placed_sample& s) {
+      *out++ = construct_point(FT(s.x), FT(s.y));
+    });
+    return out;
+  }
+
+  /// Writes the samples, with the data of their leaf tiles, into `out` (value type `Sample`).
+  template <class OutputIterator>
+  OutputIterator samples(OutputIterator out) const
+  {
+    for_each_placed([&](const internal::Penrose::Placed_sample& s) { *out++ = to_sample(s); });
+    return out;
+  }
+
+  /// Builds the tile tree breadth first, with shared vertices and neighbours.
+  Penrose_tile_tree tile_tree() const { return Penrose_tile_tree(*context_); }
+  /// @}
+
+  /// \name Access
+  /// @{
+  const Iso_rectangle_2& region() const { return region_; }
+  const Traits& geom_traits() const { return traits_; }
+  /// The factor applied to the density (from `number_of_output_points` and `density_control_factor`).
+  double density_scale() const { return density_scale_; }
+  /// The integral of the unscaled density over the region, as estimated by the sampler.
+  double density_integral() const { return integral_; }
+  /// The expected number of points: the integral of the scaled density.
+  double expected_number_of_points() const { return expected_; }
+  bool uses_correction_vectors() const { return context_->correction_table() != nullptr; }
+  /// The shared sampling context (advanced).
+  const internal::Penrose::Sampling_context& context() const { return *context_; }
+  /// Converts a sample of the context into a `Sample`.
+  Sample to_sample(const internal::Penrose::Placed_sample& s) const
+  {
+    auto construct_point = traits_.construct_point_2_object();
+    return Sample{ construct_point(FT(s.x), FT(s.y)),
+                   construct_point(FT(s.reference_x), FT(s.reference_y)),
+                   s.importance, s.leaf_level, s.leaf_code, s.threshold,
+                   s.structural_index, s.importance_index };
+  }
+  /// @}
+
+private:
+  template <class F>
+  void for_each_placed(F&& f) const
+  {
+    const internal::Penrose::Sampling_context& c = *context_;
+    internal::Penrose::Placed_sample s;
+    internal::Penrose::for_each_sample_depth_first(c,
+      [&](double x, double y, double importance, const internal::Penrose::Sample_birth& b) {
+        if(c.activate(x, y, importance, b, s) && c.contains(s.x, s.y)) f(s);
+      });
+  }
+
+  Point_2 region_min() const { return traits_.construct_vertex_2_object()(region_, 0); }
+  Point_2 region_max() const { return traits_.construct_vertex_2_object()(region_, 2); }
+  double coordinate_x(const Point_2& p) const { return CGAL::to_double(traits_.compute_x_2_object()(p)); }
+  double coordinate_y(const Point_2& p) const { return CGAL::to_double(traits_.compute_y_2_object()(p)); }
+
+  void assign_bound(std::function<double(double, double, double, double)>&, internal_np::Param_not_found) const {}
+
+  template <class Bound>
+  void assign_bound(std::function<double(double, double, double, double)>& f, const Bound& bound) const
+  {
+    auto construct_point = traits_.construct_point_2_object();
+    auto construct_rectangle = traits_.construct_iso_rectangle_2_object();
+    f = [bound, construct_point, construct_rectangle](double x0, double y0, double x1, double y1) {
+      return CGAL::to_double(bound(construct_rectangle(construct_point(FT(x0), FT(y0)),
+                                                       construct_point(FT(x1), FT(y1)))));
+    };
+  }
+
+  // Midpoint rule on a 512 x 512 grid: enough for 1% on the densities that
+  // the probes themselves can resolve.
+  static double integrate(const internal::Penrose::Sampling_context& c,
+                          double x0, double y0, double x1, double y1)
+  {
+    const int n = 512;
+    const double dx = (x1 - x0) / n, dy = (y1 - y0) / n;
+    double sum = 0.;
+    for(int j = 0; j < n; ++j) {
+      double row = 0.;
+      for(int i = 0; i < n; ++i) row += c.density(x0 + (i + 0.5) * dx, y0 + (j + 0.5) * dy);
+      sum += row;
+    }
+    return sum * dx * dy;
+  }
+
+  Traits traits_;
+  Iso_rectangle_2 region_;
+  double integral_ = 0., density_scale_ = 1., expected_ = 0.;
+  std::shared_ptr<const internal::Penrose::Sampling_context> context_;
+};
+
+} // namespace CGAL
+
+#endif // CGAL_PENROSE_IMPORTANCE_SAMPLER_H

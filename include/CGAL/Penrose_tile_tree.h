@@ -1,0 +1,261 @@
+// Copyright (c) 2026 The Penrose_Delaunay_triangulation_2 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_PENROSE_TILE_TREE_H
+#define CGAL_PENROSE_TILE_TREE_H
+
+#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Sampling_context.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Tile_edge_tables.h>
+
+#include <CGAL/assertions.h>
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace CGAL {
+
+/*!
+\ingroup PkgPenroseDelaunayTriangulation2Ref
+
+The tile tree of a `Penrose_importance_sampler`, built breadth first and
+stored in two contiguous arrays: tiles, level after level, and vertices.
+
+Tiles sharing an edge share its vertices: a vertex is created once, by the
+first of the two tiles to split the edge, and its coordinates are the same
+double values that the depth-first sampler computes. Each tile knows the tile
+across each of its edges, at its own level where that tile exists and at a
+coarser level otherwise, so the tree can be walked with no search. This is the
+structure from which `Penrose_Delaunay_triangulation_2` derives its
+triangulation; it is advanced API.
+
+The point-like A and B tiles of the 2004 system are not stored: a sample is a
+vertex flagged with the data of the A tile born there.
+*/
+class Penrose_tile_tree
+{
+public:
+  typedef std::uint32_t Index;
+  static constexpr Index null_index = 0xffffffffu;
+  typedef internal::Penrose::Tile_type Tile_type;
+
+  struct Tile
+  {
+    std::uint64_t f_code;
+    std::array<Index, 3> vertices;   ///< counter-clockwise; edge i runs from vertex i to vertex i+1
+    std::array<Index, 3> neighbors;  ///< tile across edge i, or `null_index` on the root's boundary
+    Index first_child;               ///< children are consecutive
+    Tile_type type;
+    std::uint8_t direction;
+    std::uint8_t level;
+    std::uint8_t number_of_children;
+  };
+
+  struct Vertex
+  {
+    double x, y;
+    double importance;                      ///< at the nearest point of the region
+    internal::Penrose::Sample_birth birth;  ///< valid when `is_sample`
+    bool is_sample;                         ///< an A tile is born here
+  };
+
+  /// Builds the tree that `context` describes.
+  explicit Penrose_tile_tree(const internal::Penrose::Sampling_context& context)
+    : context_(context)
+  {
+    build();
+  }
+
+  /// \name Levels and tiles
+  /// @{
+  int number_of_levels() const { return int(level_begin_.size()) - 1; }
+  Index level_begin(int l) const { return level_begin_[l]; }
+  Index level_end(int l) const { return level_begin_[l + 1]; }
+  const std::vector<Tile>& tiles() const { return tiles_; }
+  const std::vector<Vertex>& vertices() const { return vertices_; }
+  const Tile& tile(Index t) const { return tiles_[t]; }
+  const Vertex& vertex(Index v) const { return vertices_[v]; }
+  bool is_leaf(Index t) const { return tiles_[t].number_of_children == 0; }
+  Index child(Index t, int k) const { return tiles_[t].first_child + Index(k); }
+  Index neighbor(Index t, int edge) const { return tiles_[t].neighbors[edge]; }
+  double scale(Index t) const { return context_.scale(tiles_[t].level); }
+  const internal::Penrose::Sampling_context& context() const { return context_; }
+  /// @}
+
+  /// The edge of `n` whose neighbour is `t`, for two tiles of one level that share an edge.
+  int facing_edge(Index n, Index t) const
+  {
+    const Tile& tn = tiles_[n];
+    for(int i = 0; i < 3; ++i)
+      if(tn.neighbors[i] == t) return i;
+    CGAL_assertion_msg(false, "the two tiles are not linked");
+    return -1;
+  }
+
+  /// Number of children of subdivided tile `t` along its edge `edge` (1 or
+  /// 2); writes each child and its edge index, from corner `edge` on.
+  int children_along_edge(Index t, int edge, std::array<std::pair<Index, int>, 2>& out) const
+  {
+    const auto& tables = internal::Penrose::tile_edge_tables();
+    const Tile& tt = tiles_[t];
+    const int n = tables.number_of_segments[tt.type][edge];
+    for(int s = 0; s < n; ++s) {
+      const auto& ce = tables.segments[tt.type][edge][s];
+      out[s] = {tt.first_child + ce.child, ce.edge};
+    }
+    return n;
+  }
+
+  /// The vertex that splits edge `edge` of subdivided tile `t`, or `null_index`.
+  Index split_vertex(Index t, int edge) const
+  {
+    const auto& tables = internal::Penrose::tile_edge_tables();
+    const Tile& tt = tiles_[t];
+    const int k = tables.new_vertex_on_edge[tt.type][edge];
+    if(k < 0) return null_index;
+    const auto& ce = tables.corner_of_new_vertex[tt.type][k];
+    return tiles_[tt.first_child + ce.child].vertices[ce.edge];
+  }
+
+  /// Calls `f(vertex_index, sample)` for every active sample whose corrected
+  /// position lies in the region, with an `internal::Penrose::Placed_sample`.
+  template <class F>
+  void for_each_sample(F&& f) const
+  {
+    internal::Penrose::Placed_sample s;
+    for(Index v = 0; v < vertices_.size(); ++v) {
+      const Vertex& vx = vertices_[v];
+      if(vx.is_sample && context_.activate(vx.x, vx.y, vx.importance, vx.birth, s)
+         && context_.contains(s.x, s.y))
+        f(v, s);
+    }
+  }
+
+private:
+  void build()
+  {
+    for(int i = 0; i < 3; ++i)
+      add_vertex(context_.root_x(i), context_.root_y(i));
+    tiles_.push_back(Tile{0, {{0, 1, 2}}, {{null_index, null_index, null_index}}, null_index,
+                          internal::Penrose::FAT_F, 15, 0, 0});
+    level_begin_ = {0, 1};
+    for(int level = 0; level_begin_[level] < level_begin_[level + 1]; ++level) {
+      for(Index t = level_begin_[level]; t < level_begin_[level + 1]; ++t)
+        if(should_refine(t)) subdivide(t);
+      level_begin_.push_back(Index(tiles_.size()));
+    }
+    level_begin_.pop_back();
+  }
+
+  Index add_vertex(double x, double y)
+  {
+    Vertex v;
+    v.x = x; v.y = y;
+    v.importance = context_.importance(x, y);
+    v.birth = internal::Penrose::Sample_birth{0, 0, 0, 0};
+    v.is_sample = false;
+    vertices_.push_back(v);
+    return Index(vertices_.size() - 1);
+  }
+
+  bool should_refine(Index t) const
+  {
+    double x[3], y[3], importance[3];
+    for(int i = 0; i < 3; ++i) {
+      const Vertex& v = vertices_[tiles_[t].vertices[i]];
+      x[i] = v.x; y[i] = v.y; importance[i] = v.importance;
+    }
+    return context_.should_refine(tiles_[t].level, x, y, importance);
+  }
+
+  // A same-level neighbour that is already subdivided, or null_index.
+  Index subdivided_twin(const Tile& tt, int edge) const
+  {
+    const Index n = tt.neighbors[edge];
+    if(n == null_index) return null_index;
+    const Tile& tn = tiles_[n];
+    return (tn.level == tt.level && tn.number_of_children > 0) ? n : null_index;
+  }
+
+  void subdivide(Index t)
+  {
+    using namespace internal::Penrose;
+    const Tile tt = tiles_[t];
+    const Subdivision_rule& r = rule(tt.type);
+    const int child_level = tt.level + 1;
+    std::array<Index, 5> v = {{tt.vertices[0], tt.vertices[1], tt.vertices[2], null_index, null_index}};
+    for(int k = 0; k < r.number_of_new_vertices; ++k) {
+      const New_vertex_rule& nv = r.new_vertices[k];
+      const Index twin = subdivided_twin(tt, nv.edge);
+      if(twin != null_index) {
+        v[3 + k] = split_vertex(twin, facing_edge(twin, t));
+        CGAL_assertion(v[3 + k] != null_index);
+      } else {
+        const Vertex& a = vertices_[v[nv.near_corner]];
+        const Vertex& b = vertices_[v[nv.far_corner]];
+        const double x = a.x + split_fraction * (b.x - a.x);
+        const double y = a.y + split_fraction * (b.y - a.y);
+        v[3 + k] = add_vertex(x, y);
+      }
+      if(nv.is_sample) {
+        Vertex& s = vertices_[v[3 + k]];
+        s.is_sample = true;
+        s.birth = Sample_birth{ tt.f_code * 4 + r.sample_code_pair,
+                                tile_threshold(t) + pair_weight(r.sample_code_pair, child_level),
+                                static_cast<std::uint8_t>(child_level),
+                                add_direction(tt.direction, r.sample_direction_step) };
+      }
+    }
+    const Index first = Index(tiles_.size());
+    for(int c = 0; c < r.number_of_children; ++c) {
+      const Child_rule& cr = r.children[c];
+      tiles_.push_back(Tile{ tt.f_code * 4 + cr.code_pair,
+                             {{v[cr.corners[0]], v[cr.corners[1]], v[cr.corners[2]]}},
+                             {{null_index, null_index, null_index}}, null_index,
+                             cr.type, add_direction(tt.direction, cr.direction_step),
+                             static_cast<std::uint8_t>(child_level), 0 });
+    }
+    tiles_[t].first_child = first;
+    tiles_[t].number_of_children = r.number_of_children;
+    link_children(t, first);
+  }
+
+  void link_children(Index t, Index first)
+  {
+    const auto& tables = internal::Penrose::tile_edge_tables();
+    const Tile& tt = tiles_[t];
+    for(int c = 0; c < tt.number_of_children; ++c)
+      for(int j = 0; j < 3; ++j) {
+        const auto& p = tables.places[tt.type][c][j];
+        Index& slot = tiles_[first + c].neighbors[j];
+        if(!p.on_parent_edge) { slot = first + p.sibling.child; continue; }
+        const Index twin = subdivided_twin(tt, p.parent_edge);
+        if(twin == null_index) { slot = tt.neighbors[p.parent_edge]; continue; }
+        std::array<std::pair<Index, int>, 2> across;
+        const int n = children_along_edge(twin, facing_edge(twin, t), across);
+        CGAL_assertion(n == tables.number_of_segments[tt.type][p.parent_edge]);
+        const auto& other = across[n - 1 - p.segment];  // the twin runs the edge backwards
+        slot = other.first;
+        tiles_[other.first].neighbors[other.second] = first + c;
+      }
+  }
+
+  // Fibonacci value of a tile's F-code, from the code itself.
+  std::uint64_t tile_threshold(Index t) const
+  {
+    const Tile& tt = tiles_[t];
+    std::uint64_t v = 0;
+    for(int l = 1; l <= tt.level; ++l)
+      v += internal::Penrose::pair_weight(std::uint8_t(tt.f_code >> (2 * (tt.level - l)) & 3u), l);
+    return v;
+  }
+
+  internal::Penrose::Sampling_context context_;
+  std::vector<Tile> tiles_;
+  std::vector<Vertex> vertices_;
+  std::vector<Index> level_begin_;
+};
+
+} // namespace CGAL
+
+#endif // CGAL_PENROSE_TILE_TREE_H

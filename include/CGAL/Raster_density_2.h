@@ -1,0 +1,158 @@
+// Copyright (c) 2026 The Penrose_Delaunay_triangulation_2 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_RASTER_DENSITY_2_H
+#define CGAL_RASTER_DENSITY_2_H
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/number_utils.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <functional>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+
+/*!
+\ingroup PkgPenroseDelaunayTriangulation2Ref
+
+A density given by a raster of non-negative values stretched over a
+rectangle, interpolated bilinearly between pixel centres. Row 0 is the top row
+(largest y), as in an image.
+
+Besides evaluating the density, it bounds it from above over any box with a
+max pyramid, in constant time, which makes it a conservative
+`density_upper_bound` for `Penrose_importance_sampler`:
+
+\code
+CGAL::Raster_density_2<K> d(width, height, values, region);
+CGAL::Penrose_importance_sampler<K> sampler(region, d,
+  CGAL::parameters::density_upper_bound(d.upper_bound_function()));
+\endcode
+*/
+template <class Traits = Exact_predicates_inexact_constructions_kernel>
+class Raster_density_2
+{
+public:
+  typedef typename Traits::FT FT;
+  typedef typename Traits::Point_2 Point_2;
+  typedef typename Traits::Iso_rectangle_2 Iso_rectangle_2;
+
+  /// `values` holds `width * height` values, row after row from the top.
+  /// \throws std::invalid_argument on an empty raster, a size mismatch, or a
+  /// negative, NaN or infinite value.
+  Raster_density_2(std::size_t width, std::size_t height, std::vector<double> values,
+                   const Iso_rectangle_2& region, const Traits& traits = Traits())
+    : w_(width), h_(height), traits_(traits)
+  {
+    if(width == 0 || height == 0 || values.size() != width * height)
+      throw std::invalid_argument("Raster_density_2: the raster is empty or its size does not match");
+    for(std::size_t k = 0; k < values.size(); ++k)
+      if(!(values[k] >= 0. && values[k] < std::numeric_limits<double>::infinity()))
+        throw std::invalid_argument("Raster_density_2: pixel (" + std::to_string(k % width) + ", "
+                                    + std::to_string(k / width) + ") is " + std::to_string(values[k])
+                                    + "; values must be finite and non-negative");
+    x0_ = to_double(traits_.compute_x_2_object()((region.min)()));
+    y0_ = to_double(traits_.compute_y_2_object()((region.min)()));
+    x1_ = to_double(traits_.compute_x_2_object()((region.max)()));
+    y1_ = to_double(traits_.compute_y_2_object()((region.max)()));
+    if(!(x1_ > x0_ && y1_ > y0_))
+      throw std::invalid_argument("Raster_density_2: the region is empty or degenerate");
+    levels_.push_back(std::move(values));
+    build_pyramid();
+  }
+
+  std::size_t width() const { return w_; }
+  std::size_t height() const { return h_; }
+  /// The value of pixel (i, j), column i, row j from the top.
+  double pixel(std::size_t i, std::size_t j) const { return levels_[0][j * w_ + i]; }
+
+  /// The bilinearly interpolated density at `p`.
+  double operator()(const Point_2& p) const
+  {
+    const double u = pixel_u(to_double(traits_.compute_x_2_object()(p))) - 0.5;
+    const double v = pixel_v(to_double(traits_.compute_y_2_object()(p))) - 0.5;
+    const double fu = std::floor(u), fv = std::floor(v);
+    const double a = u - fu, b = v - fv;
+    const long i = long(fu), j = long(fv);
+    return (1 - a) * (1 - b) * at(i, j) + a * (1 - b) * at(i + 1, j)
+         + (1 - a) * b * at(i, j + 1) + a * b * at(i + 1, j + 1);
+  }
+
+  /// An upper bound of the density over `box`: the largest pixel whose
+  /// interpolation support meets it, read from the max pyramid.
+  double upper_bound(const Iso_rectangle_2& box) const
+  {
+    const double bx0 = to_double(traits_.compute_x_2_object()((box.min)()));
+    const double by0 = to_double(traits_.compute_y_2_object()((box.min)()));
+    const double bx1 = to_double(traits_.compute_x_2_object()((box.max)()));
+    const double by1 = to_double(traits_.compute_y_2_object()((box.max)()));
+    // pixels i with centre within one pixel of the box in u, likewise in v
+    const long i0 = clamp_index(long(std::floor(pixel_u(bx0) - 0.5)), w_);
+    const long i1 = clamp_index(long(std::floor(pixel_u(bx1) - 0.5)) + 1, w_);
+    const long j0 = clamp_index(long(std::floor(pixel_v(by1) - 0.5)), h_);
+    const long j1 = clamp_index(long(std::floor(pixel_v(by0) - 0.5)) + 1, h_);
+    // the coarsest level at which the range spans at most two cells each way
+    std::size_t k = 0;
+    while(k + 1 < levels_.size() && ((i1 >> k) - (i0 >> k) > 1 || (j1 >> k) - (j0 >> k) > 1)) ++k;
+    const std::size_t wk = level_width(k);
+    double m = 0.;
+    for(long j = j0 >> k; j <= (j1 >> k); ++j)
+      for(long i = i0 >> k; i <= (i1 >> k); ++i)
+        m = (std::max)(m, levels_[k][std::size_t(j) * wk + std::size_t(i)]);
+    return m;
+  }
+
+  /// `upper_bound` as a callable, for the `density_upper_bound` named parameter.
+  std::function<double(const Iso_rectangle_2&)> upper_bound_function() const
+  {
+    return [this](const Iso_rectangle_2& b) { return upper_bound(b); };
+  }
+
+  /// The exact integral of the interpolated density over the region, up to
+  /// the half-pixel border where the interpolation is clamped.
+  double integral() const
+  {
+    double s = 0.;
+    for(double v : levels_[0]) s += v;
+    return s * (x1_ - x0_) * (y1_ - y0_) / double(w_ * h_);
+  }
+
+private:
+  double pixel_u(double x) const { return (x - x0_) / (x1_ - x0_) * double(w_); }
+  double pixel_v(double y) const { return (y1_ - y) / (y1_ - y0_) * double(h_); }
+  static long clamp_index(long i, std::size_t n) { return (std::min)((std::max)(i, 0L), long(n) - 1); }
+  double at(long i, long j) const { return levels_[0][std::size_t(clamp_index(j, h_)) * w_ + std::size_t(clamp_index(i, w_))]; }
+  std::size_t level_width(std::size_t k) const { return ((w_ - 1) >> k) + 1; }
+  std::size_t level_height(std::size_t k) const { return ((h_ - 1) >> k) + 1; }
+
+  void build_pyramid()
+  {
+    for(std::size_t k = 1; level_width(k - 1) > 1 || level_height(k - 1) > 1; ++k) {
+      const std::vector<double>& f = levels_[k - 1];
+      const std::size_t fw = level_width(k - 1), fh = level_height(k - 1);
+      const std::size_t cw = level_width(k), ch = level_height(k);
+      std::vector<double> c(cw * ch, 0.);
+      for(std::size_t j = 0; j < fh; ++j)
+        for(std::size_t i = 0; i < fw; ++i) {
+          double& m = c[(j / 2) * cw + i / 2];
+          m = (std::max)(m, f[j * fw + i]);
+        }
+      levels_.push_back(std::move(c));
+    }
+  }
+
+  std::size_t w_, h_;
+  Traits traits_;
+  double x0_, y0_, x1_, y1_;
+  std::vector<std::vector<double>> levels_;  // levels_[0]: the raster; then 2x2 maxima
+};
+
+} // namespace CGAL
+
+#endif // CGAL_RASTER_DENSITY_2_H

@@ -1,0 +1,409 @@
+// Copyright (c) 2026 The Penrose_Delaunay_triangulation_2 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Properties of Penrose_importance_sampler and Penrose_tile_tree, each
+// checked against an independent expectation: geometry of the tiles, the
+// Fibonacci codes, point counts against the integral of the density, spacing
+// against the packing distance, coverage, determinism and input checks.
+
+#include <CGAL/Penrose_importance_sampler.h>
+#include <CGAL/Penrose_tile_tree.h>
+#include <CGAL/Raster_density_2.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/point_set_quality.h>
+
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Simple_cartesian.h>
+
+#include <boost/iterator/function_output_iterator.hpp>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <set>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace {
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel Epick;
+typedef CGAL::Penrose_importance_sampler<Epick> Sampler;
+typedef Epick::Point_2 Point;
+namespace Q = CGAL::Penrose_quality;
+
+const Epick::Iso_rectangle_2 unit_square(0, 0, 1, 1);
+const double phi2 = 2.6180339887498949;
+
+std::vector<Point> constant_sample(double n, bool correct = true)
+{
+  std::vector<Point> p;
+  Sampler s(unit_square, [](const Point&) { return 1.; },
+            CGAL::parameters::use_correction_vectors(correct).number_of_output_points(std::size_t(n)));
+  s(std::back_inserter(p));
+  return p;
+}
+
+double triangle_area(const CGAL::Penrose_tile_tree& tree, CGAL::Penrose_tile_tree::Index t)
+{
+  const auto& tile = tree.tile(t);
+  const auto& a = tree.vertex(tile.vertices[0]);
+  const auto& b = tree.vertex(tile.vertices[1]);
+  const auto& c = tree.vertex(tile.vertices[2]);
+  return 0.5 * ((b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y));
+}
+
+// Separating axis test with a tolerance: true if the interiors overlap by more than eps.
+bool interiors_overlap(const CGAL::Penrose_tile_tree& tree, CGAL::Penrose_tile_tree::Index s,
+                       CGAL::Penrose_tile_tree::Index t, double eps)
+{
+  const CGAL::Penrose_tile_tree::Index tiles[2] = {s, t};
+  for(int k = 0; k < 2; ++k)
+    for(int e = 0; e < 3; ++e) {
+      const auto& a = tree.vertex(tree.tile(tiles[k]).vertices[e]);
+      const auto& b = tree.vertex(tree.tile(tiles[k]).vertices[(e + 1) % 3]);
+      const double nx = b.y - a.y, ny = a.x - b.x; // outward normal of a ccw edge
+      double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
+      for(int m = 0; m < 2; ++m)
+        for(int i = 0; i < 3; ++i) {
+          const auto& v = tree.vertex(tree.tile(tiles[m]).vertices[i]);
+          const double d = nx * (v.x - a.x) + ny * (v.y - a.y);
+          lo[m] = std::min(lo[m], d); hi[m] = std::max(hi[m], d);
+        }
+      const double len = std::hypot(nx, ny);
+      if(hi[0] <= lo[1] + eps * len || hi[1] <= lo[0] + eps * len) return false;
+    }
+  return true;
+}
+
+CGAL::Penrose_tile_tree constant_tree(double n)
+{
+  return Sampler(unit_square, [](const Point&) { return 1.; },
+                 CGAL::parameters::number_of_output_points(std::size_t(n))).tile_tree();
+}
+
+} // namespace
+
+TEST(Tiles, ChildrenCoverTheirParentExactly)
+{
+  const CGAL::Penrose_tile_tree tree = constant_tree(3000);
+  std::size_t subdivided = 0;
+  for(CGAL::Penrose_tile_tree::Index t = 0; t < tree.tiles().size(); ++t) {
+    if(tree.is_leaf(t)) continue;
+    ++subdivided;
+    const double area = triangle_area(tree, t);
+    ASSERT_GT(area, 0.);
+    double sum = 0.;
+    const int n = tree.tile(t).number_of_children;
+    for(int c = 0; c < n; ++c) {
+      const double a = triangle_area(tree, tree.child(t, c));
+      ASSERT_GT(a, 0.) << "child " << c << " of tile " << t << " is not counter-clockwise";
+      sum += a;
+      for(int c2 = c + 1; c2 < n; ++c2)
+        ASSERT_FALSE(interiors_overlap(tree, tree.child(t, c), tree.child(t, c2), 1e-9 * std::sqrt(area)))
+          << "children " << c << " and " << c2 << " of tile " << t << " overlap";
+    }
+    ASSERT_NEAR(sum, area, 1e-12 * area + 1e-15);
+  }
+  EXPECT_GT(subdivided, 1000u);
+}
+
+TEST(Tiles, NeighboursShareTheirEdge)
+{
+  const CGAL::Penrose_tile_tree tree = constant_tree(3000);
+  std::size_t same_level = 0, coarser = 0;
+  for(CGAL::Penrose_tile_tree::Index t = 0; t < tree.tiles().size(); ++t)
+    for(int e = 0; e < 3; ++e) {
+      const auto n = tree.neighbor(t, e);
+      if(n == CGAL::Penrose_tile_tree::null_index) continue;
+      const auto& tt = tree.tile(t);
+      const auto& tn = tree.tile(n);
+      ASSERT_LE(tn.level, tt.level);
+      const auto& a = tree.vertex(tt.vertices[e]);
+      const auto& b = tree.vertex(tt.vertices[(e + 1) % 3]);
+      if(tn.level == tt.level) {
+        ++same_level;
+        const int f = tree.facing_edge(n, t);
+        EXPECT_EQ(tn.vertices[f], tt.vertices[(e + 1) % 3]);
+        EXPECT_EQ(tn.vertices[(f + 1) % 3], tt.vertices[e]);
+      } else {
+        ++coarser;
+        // the edge lies on an edge of the coarser tile
+        bool on_some_edge = false;
+        for(int f = 0; f < 3; ++f) {
+          const auto& c = tree.vertex(tn.vertices[f]);
+          const auto& d = tree.vertex(tn.vertices[(f + 1) % 3]);
+          const double l = std::hypot(d.x - c.x, d.y - c.y);
+          const double da = ((d.x - c.x) * (a.y - c.y) - (d.y - c.y) * (a.x - c.x)) / l;
+          const double db = ((d.x - c.x) * (b.y - c.y) - (d.y - c.y) * (b.x - c.x)) / l;
+          if(std::abs(da) < 1e-12 && std::abs(db) < 1e-12) on_some_edge = true;
+        }
+        EXPECT_TRUE(on_some_edge);
+      }
+    }
+  EXPECT_GT(same_level, 1000u);
+  EXPECT_GT(coarser, 0u); // the region's border makes the tree adaptive
+}
+
+TEST(Tiles, FCodesAreZeckendorfAndThresholdsDistinct)
+{
+  const CGAL::Penrose_tile_tree tree = constant_tree(5000);
+  for(const auto& t : tree.tiles()) ASSERT_EQ(t.f_code & (t.f_code >> 1), 0u);
+  // All sample vertices are A/B tiles of the deepest level: their thresholds
+  // must differ, and equal the Fibonacci reading of their codes.
+  std::set<std::uint64_t> thresholds;
+  std::size_t samples = 0;
+  for(const auto& v : tree.vertices()) {
+    if(!v.is_sample) continue;
+    ++samples;
+    ASSERT_EQ(v.birth.code & (v.birth.code >> 1), 0u);
+    std::uint64_t f = 0;
+    const int bits = 2 * v.birth.level;
+    for(int b = 0; b < bits; ++b)
+      if(v.birth.code >> b & 1u) f += CGAL::internal::Penrose::fibonacci().fib[bits + 1 - b];
+    ASSERT_EQ(f, v.birth.threshold);
+    thresholds.insert(v.birth.threshold);
+  }
+  EXPECT_GT(samples, 5000u);
+  EXPECT_EQ(thresholds.size(), samples);
+}
+
+TEST(Tiles, TreeAndStreamingSamplerAgreeBitForBit)
+{
+  Sampler s(unit_square, [](const Point& p) { return 1. + 3. * p.x() * p.y(); },
+            CGAL::parameters::number_of_output_points(20000));
+  std::vector<std::pair<double, double>> a, b;
+  s.samples(boost::make_function_output_iterator([&](const Sampler::Sample& q) {
+    a.emplace_back(q.point.x(), q.point.y());
+  }));
+  s.tile_tree().for_each_sample([&](CGAL::Penrose_tile_tree::Index, const CGAL::internal::Penrose::Placed_sample& q) {
+    b.emplace_back(q.x, q.y);
+  });
+  std::sort(a.begin(), a.end());
+  std::sort(b.begin(), b.end());
+  ASSERT_EQ(a.size(), b.size());
+  EXPECT_TRUE(a == b);
+}
+
+TEST(Density, ConstantCountMatchesTheIntegral)
+{
+  for(double n : {1e4, 3e4, 1e5, 3e5}) {
+    const double count = double(constant_sample(n).size());
+    EXPECT_NEAR(count / n, 1., 0.01) << "target " << n;
+  }
+  // a density given in points per unit area, on a region that is not a square
+  const Epick::Iso_rectangle_2 r(-2, 1, 3, 3);
+  std::vector<Point> p;
+  Sampler(r, [](const Point&) { return 4000.; })(std::back_inserter(p));
+  EXPECT_NEAR(double(p.size()) / 40000., 1., 0.01);
+}
+
+TEST(Density, CountIsLinearInTheDensity)
+{
+  // least squares over a decade of densities
+  std::vector<double> x, y;
+  for(int k = 0; k <= 10; ++k) {
+    const double d = 2e4 * std::pow(10., k / 10.);
+    std::vector<Point> p;
+    Sampler(unit_square, [d](const Point&) { return d; })(std::back_inserter(p));
+    x.push_back(d); y.push_back(double(p.size()));
+  }
+  const double n = double(x.size());
+  double sx = 0, sy = 0, sxx = 0, sxy = 0, syy = 0;
+  for(std::size_t i = 0; i < x.size(); ++i) {
+    sx += x[i]; sy += y[i]; sxx += x[i] * x[i]; sxy += x[i] * y[i]; syy += y[i] * y[i];
+  }
+  const double r = (n * sxy - sx * sy) / std::sqrt((n * sxx - sx * sx) * (n * syy - sy * sy));
+  EXPECT_GE(r * r, 0.9999);
+}
+
+TEST(Density, RampCellCountsFollowTheIntegral)
+{
+  std::vector<Point> p;
+  Sampler s(unit_square, [](const Point& q) { return q.x(); },
+            CGAL::parameters::number_of_output_points(65536));
+  s(std::back_inserter(p));
+  const int g = 16;
+  std::vector<double> count(g * g, 0.);
+  for(const Point& q : p) {
+    const int i = std::min(g - 1, int(q.x() * g)), j = std::min(g - 1, int(q.y() * g));
+    count[j * g + i] += 1.;
+  }
+  // integral of scale * x over cell column i: scale * (x1^2 - x0^2) / 2 / g
+  double err = 0., norm = 0.;
+  for(int j = 0; j < g; ++j)
+    for(int i = 0; i < g; ++i) {
+      const double x0 = double(i) / g, x1 = double(i + 1) / g;
+      const double e = s.density_scale() * (x1 * x1 - x0 * x0) / 2. / g;
+      err += (count[j * g + i] - e) * (count[j * g + i] - e);
+      norm += e * e;
+    }
+  EXPECT_LE(std::sqrt(err / norm), 0.03);
+}
+
+TEST(BlueNoise, SpacingFloorsOverOneLevel)
+{
+  for(int k = 0; k < 7; ++k) {
+    const std::vector<Point> p = constant_sample(16384 * std::pow(phi2, (k + 0.5) / 7.));
+    const Q::Spacing s = Q::spacing(p, Q::Rectangle{0, 0, 1, 1});
+    EXPECT_GE(s.delta_min, 0.60) << "density " << k;
+    EXPECT_GE(s.delta_avg, 0.84) << "density " << k;
+  }
+}
+
+TEST(BlueNoise, CoverageHasNoHoles)
+{
+  for(double n : {16384., 40000.}) {
+    const std::vector<Point> p = constant_sample(n);
+    EXPECT_LE(Q::coverage_radius(p, Q::Rectangle{0, 0, 1, 1}), 2.) << n << " points";
+  }
+  // the corners of a wide region too
+  std::vector<Point> p;
+  const Epick::Iso_rectangle_2 wide(0, 0, 4, 1);
+  Sampler(wide, [](const Point&) { return 1.; }, CGAL::parameters::number_of_output_points(20000))(std::back_inserter(p));
+  EXPECT_LE(Q::coverage_radius(p, Q::Rectangle{0, 0, 4, 1}), 2.);
+}
+
+TEST(Sampler, IsDeterministic)
+{
+  auto density = [](const Point& q) { return 1. + std::sin(7 * q.x()) * std::sin(5 * q.y()); };
+  std::vector<Point> a, b;
+  Sampler(unit_square, density, CGAL::parameters::number_of_output_points(30000))(std::back_inserter(a));
+  Sampler(unit_square, density, CGAL::parameters::number_of_output_points(30000))(std::back_inserter(b));
+  ASSERT_EQ(a.size(), b.size());
+  for(std::size_t i = 0; i < a.size(); ++i) {
+    ASSERT_EQ(a[i].x(), b[i].x());
+    ASSERT_EQ(a[i].y(), b[i].y());
+  }
+}
+
+namespace {
+template <class F>
+std::string message_of_invalid_argument(F f)
+{
+  try { f(); } catch(const std::invalid_argument& e) { return e.what(); }
+  return "no std::invalid_argument thrown";
+}
+} // namespace
+
+TEST(Sampler, RejectsBadDensities)
+{
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  for(double bad : {-1., nan, inf}) {
+    const std::string m = message_of_invalid_argument([&] {
+      Sampler s(unit_square, [bad](const Point& q) { return q.x() > 0.5 && q.y() > 0.25 ? bad : 100.; });
+      std::vector<Point> p;
+      s(std::back_inserter(p));
+    });
+    EXPECT_NE(m.find("density at ("), std::string::npos) << m;
+    EXPECT_NE(m.find(bad == -1. ? "-1" : (bad == inf ? "inf" : "nan")), std::string::npos) << m;
+  }
+}
+
+TEST(Sampler, RejectsBadRegionsAndParameters)
+{
+  auto one = [](const Point&) { return 1.; };
+  EXPECT_THROW(Sampler(Epick::Iso_rectangle_2(0, 0, 0, 1), one), std::invalid_argument);
+  EXPECT_THROW(Sampler(Epick::Iso_rectangle_2(0, 0, 1, 0), one), std::invalid_argument);
+  const double inf = std::numeric_limits<double>::infinity();
+  EXPECT_THROW(Sampler(Epick::Iso_rectangle_2(Point(0, 0), Point(inf, 1)), one), std::invalid_argument);
+  EXPECT_THROW(Sampler(unit_square, [](const Point&) { return 0.; }, CGAL::parameters::number_of_output_points(100)),
+               std::invalid_argument);
+  EXPECT_THROW(Sampler(unit_square, one, CGAL::parameters::density_control_factor(-1.)), std::invalid_argument);
+  // a density beyond what 30 levels represent
+  EXPECT_THROW(Sampler(unit_square, [](const Point&) { return 1e300; }), std::invalid_argument);
+}
+
+TEST(Sampler, MaximumNumberGuardsMemory)
+{
+  auto one = [](const Point&) { return 1.; };
+  // 10^12 points would exhaust memory: refused before any allocation
+  EXPECT_THROW(Sampler(unit_square, one, CGAL::parameters::number_of_output_points(std::size_t(1e12))), std::length_error);
+  EXPECT_THROW(Sampler(unit_square, one, CGAL::parameters::number_of_output_points(5000).maximum_number(4000)), std::length_error);
+  EXPECT_NO_THROW(Sampler(unit_square, one, CGAL::parameters::number_of_output_points(5000).maximum_number(6000)));
+}
+
+TEST(Sampler, ConservativeBoundFindsThinFeatures)
+{
+  // a thin bright line that the probes of most tiles miss
+  const std::size_t w = 512, h = 512;
+  std::vector<double> v(w * h, 1.);
+  for(std::size_t j = 0; j < h; ++j) v[j * w + 301] = 400.;
+  const CGAL::Raster_density_2<Epick> d(w, h, v, unit_square);
+  const double line = 400. / 512.;  // integral of the line's excess, over the unscaled unit
+  auto count_near_line = [&](bool bound) {
+    std::vector<Point> p;
+    const auto np = CGAL::parameters::density_upper_bound(d.upper_bound_function()).density_control_factor(20000.);
+    if(bound) Sampler(unit_square, d, np)(std::back_inserter(p));
+    else Sampler(unit_square, d, CGAL::parameters::density_control_factor(20000.))(std::back_inserter(p));
+    std::size_t c = 0;
+    for(const Point& q : p) if(std::abs(q.x() - 301.5 / 512.) < 1.5 / 512.) ++c;
+    return double(c);
+  };
+  // expected in the band: the integral of the interpolated density over it
+  double expected = 0.;
+  for(int k = 0; k < 3000; ++k) {
+    const double x = 301.5 / 512. + (k + 0.5) / 3000. * 3. / 512. - 1.5 / 512.;
+    expected += d(Point(x, 0.5)) * 3. / 512. / 3000.;
+  }
+  expected *= 20000.;
+  const double with_bound = count_near_line(true), with_probes = count_near_line(false);
+  EXPECT_NEAR(with_bound / expected, 1., 0.15);
+  EXPECT_LT(with_probes, with_bound);
+  (void)line;
+}
+
+namespace {
+// The smallest model of PenroseImportanceSamplerTraits_2.
+struct Minimal_traits
+{
+  typedef double FT;
+  struct Point_2 { double px, py; };
+  struct Iso_rectangle_2 { Point_2 lo, hi; };
+  struct Construct_point_2 { Point_2 operator()(double x, double y) const { return {x, y}; } };
+  struct Compute_x_2 { double operator()(const Point_2& p) const { return p.px; } };
+  struct Compute_y_2 { double operator()(const Point_2& p) const { return p.py; } };
+  struct Construct_vertex_2 {
+    Point_2 operator()(const Iso_rectangle_2& r, int i) const {
+      return i == 0 ? r.lo : i == 2 ? r.hi : i == 1 ? Point_2{r.hi.px, r.lo.py} : Point_2{r.lo.px, r.hi.py};
+    }
+  };
+  struct Construct_iso_rectangle_2 { Iso_rectangle_2 operator()(const Point_2& a, const Point_2& b) const { return {a, b}; } };
+  Construct_point_2 construct_point_2_object() const { return {}; }
+  Compute_x_2 compute_x_2_object() const { return {}; }
+  Compute_y_2 compute_y_2_object() const { return {}; }
+  Construct_vertex_2 construct_vertex_2_object() const { return {}; }
+  Construct_iso_rectangle_2 construct_iso_rectangle_2_object() const { return {}; }
+};
+
+template <class K>
+std::vector<std::pair<double, double>> sample_with(const typename K::Iso_rectangle_2& r)
+{
+  typedef typename K::Point_2 P;
+  CGAL::Penrose_importance_sampler<K> s(r, [](const P& p) {
+    const double x = CGAL::to_double(K().compute_x_2_object()(p));
+    return 1000. + 3000. * x;
+  });
+  std::vector<std::pair<double, double>> out;
+  std::vector<P> pts;
+  s(std::back_inserter(pts));
+  for(const P& p : pts)
+    out.emplace_back(CGAL::to_double(K().compute_x_2_object()(p)), CGAL::to_double(K().compute_y_2_object()(p)));
+  return out;
+}
+} // namespace
+
+TEST(Traits, EveryKernelGivesTheSamePoints)
+{
+  const auto epick = sample_with<Epick>(Epick::Iso_rectangle_2(0, 0, 2, 1));
+  typedef CGAL::Exact_predicates_exact_constructions_kernel Epeck;
+  typedef CGAL::Simple_cartesian<double> Sc;
+  const auto epeck = sample_with<Epeck>(Epeck::Iso_rectangle_2(0, 0, 2, 1));
+  const auto sc = sample_with<Sc>(Sc::Iso_rectangle_2(0, 0, 2, 1));
+  const auto minimal = sample_with<Minimal_traits>(Minimal_traits::Iso_rectangle_2{{0, 0}, {2, 1}});
+  EXPECT_GT(epick.size(), 3000u);
+  EXPECT_TRUE(epick == epeck);
+  EXPECT_TRUE(epick == sc);
+  EXPECT_TRUE(epick == minimal);
+}

@@ -1,0 +1,175 @@
+// Copyright (c) 2026 The Penrose_Delaunay_triangulation_2 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Offline optimiser of the correction vectors. For each importance index it
+// samples the unit square at constant importance without correction, relaxes
+// the points with Lloyd's algorithm (CGAL's Delaunay triangulation and its
+// Voronoi dual), and averages the displacement from each raw point to its
+// relaxed position per (importance index, structural index), in the frame of
+// the sample's leaf tile divided by the leaf scale. Points near the border,
+// whose cells the border distorts, are left out of the averages.
+//
+// It writes a C++ header; the command line that made it is recorded there.
+
+#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Depth_first_sampling.h>
+
+#include <CGAL/Delaunay_triangulation_2.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace P = CGAL::internal::Penrose;
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef CGAL::Triangulation_vertex_base_with_info_2<std::size_t, K> Vb;
+typedef CGAL::Triangulation_data_structure_2<Vb> Tds;
+typedef CGAL::Delaunay_triangulation_2<K, Tds> Delaunay;
+
+struct Options
+{
+  unsigned bins = 21;
+  int structural_bits = 6;
+  double points = 20000;
+  int iterations = 30;
+  int runs_per_bin = 2;
+  std::string out;
+};
+
+static void usage()
+{
+  std::cerr << "usage: penrose_correction_optimizer --out FILE [--bins 21] [--structural-bits 6]\n"
+               "         [--points 20000] [--iterations 30] [--runs-per-bin 2]\n";
+  std::exit(2);
+}
+
+// Moves every point whose Voronoi cell is bounded to the cell's centroid.
+static void lloyd_step(std::vector<K::Point_2>& p)
+{
+  std::vector<std::pair<K::Point_2, std::size_t>> indexed;
+  indexed.reserve(p.size());
+  for(std::size_t i = 0; i < p.size(); ++i) indexed.emplace_back(p[i], i);
+  Delaunay dt(indexed.begin(), indexed.end());
+  std::vector<K::Point_2> next = p;
+  for(auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v) {
+    auto f = dt.incident_faces(v), done = f;
+    std::vector<K::Point_2> cell;
+    bool bounded = true;
+    do {
+      if(dt.is_infinite(f)) { bounded = false; break; }
+      cell.push_back(dt.circumcenter(f));
+    } while(++f != done);
+    if(!bounded) continue;
+    double a = 0., cx = 0., cy = 0.;
+    for(std::size_t i = 0; i < cell.size(); ++i) {
+      const K::Point_2& q = cell[i];
+      const K::Point_2& r = cell[(i + 1) % cell.size()];
+      const double w = q.x() * r.y() - r.x() * q.y();
+      a += w; cx += (q.x() + r.x()) * w; cy += (q.y() + r.y()) * w;
+    }
+    next[v->info()] = K::Point_2(cx / (3. * a), cy / (3. * a));
+  }
+  p.swap(next);
+}
+
+int main(int argc, char** argv)
+{
+  Options o;
+  std::ostringstream command;
+  command << "penrose_correction_optimizer";
+  for(int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if(a != "--out") command << ' ' << a << (i + 1 < argc ? std::string(" ") + argv[i + 1] : "");
+    if(i + 1 >= argc) usage();
+    const char* v = argv[++i];
+    if(a == "--bins") o.bins = unsigned(std::atoi(v));
+    else if(a == "--structural-bits") o.structural_bits = std::atoi(v);
+    else if(a == "--points") o.points = std::atof(v);
+    else if(a == "--iterations") o.iterations = std::atoi(v);
+    else if(a == "--runs-per-bin") o.runs_per_bin = std::atoi(v);
+    else if(a == "--out") o.out = v;
+    else usage();
+  }
+  if(o.out.empty() || o.bins < 1 || o.structural_bits < 2 || o.structural_bits % 2 || o.points < 100)
+    usage();
+
+  const unsigned columns = P::number_of_structural_indices(o.structural_bits);
+  std::vector<double> sum(2 * o.bins * columns, 0.);
+  std::vector<std::size_t> count(o.bins * columns, 0);
+  const double phi2 = P::golden_ratio * P::golden_ratio;
+  // On the unit square about 0.1 I points come out: the level holding the target.
+  const int level = int(std::floor(std::log1p(std::sqrt(5.) * 10. * o.points) / std::log(phi2)));
+
+  for(unsigned bin = 0; bin < o.bins; ++bin)
+    for(int run = 0; run < o.runs_per_bin; ++run) {
+      const double f = (bin + (run + 0.5) / o.runs_per_bin) / o.bins;
+      const double importance = (std::pow(phi2, level + f) - 1.) / std::sqrt(5.);
+      P::Sampling_context unit(0, 0, 1, 1, [](double, double) { return 1.; }, nullptr, 1., nullptr);
+      const double density = importance / unit.importance_per_density();
+      P::Sampling_context c(0, 0, 1, 1, [density](double, double) { return density; }, nullptr, 1., nullptr);
+
+      std::vector<P::Placed_sample> raw;
+      P::Placed_sample s;
+      P::for_each_sample_depth_first(c, [&](double x, double y, double i, const P::Sample_birth& b) {
+        if(c.activate(x, y, i, b, s) && c.contains(x, y)) raw.push_back(s);
+      });
+      std::vector<K::Point_2> p;
+      for(const auto& r : raw) p.emplace_back(r.x, r.y);
+      for(int it = 0; it < o.iterations; ++it) lloyd_step(p);
+
+      const double d_max = std::sqrt(2. / (std::sqrt(3.) * raw.size()));
+      const double band = 10. * d_max;
+      const P::Direction_table& u = P::directions();
+      for(std::size_t i = 0; i < raw.size(); ++i) {
+        const P::Placed_sample& r = raw[i];
+        if(r.x < band || r.x > 1 - band || r.y < band || r.y > 1 - band) continue;
+        const double dx = p[i].x() - r.x, dy = p[i].y() - r.y;
+        const double sl = c.scale(r.leaf_level);
+        const int d = r.leaf_direction, e = (d + 5) % 20;
+        const unsigned is = P::fibonacci_value(r.leaf_code & ((1u << o.structural_bits) - 1), o.structural_bits);
+        const unsigned iv = P::importance_index(r.importance, o.bins);
+        const std::size_t k = iv * columns + is;
+        sum[2 * k] += (dx * u.x[d] + dy * u.y[d]) / sl;
+        sum[2 * k + 1] += (dx * u.x[e] + dy * u.y[e]) / sl;
+        ++count[k];
+      }
+      std::cerr << "bin " << bin << " run " << run << ": " << raw.size() << " points\n";
+    }
+
+  std::ofstream out(o.out);
+  out << "// Copyright (c) 2026 The Penrose_Delaunay_triangulation_2 authors.\n"
+         "// SPDX-License-Identifier: GPL-3.0-or-later\n//\n"
+         "// GENERATED FILE, do not edit. Made by tools/penrose_correction_optimizer:\n//   "
+      << command.str() << " --out <this file>\n"
+         "// (README.md, \"Correction vectors\"). Rows: importance index; columns:\n"
+         "// structural index; entries (a, b) in leaf scales, along u(d_leaf) and u(d_leaf + 5).\n\n"
+         "#ifndef CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_CORRECTION_VECTORS_H\n"
+         "#define CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_CORRECTION_VECTORS_H\n\n"
+         "#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Correction_table.h>\n\n"
+         "namespace CGAL {\nnamespace internal {\nnamespace Penrose {\n\n"
+         "inline const Correction_table& default_correction_table()\n{\n"
+         "  static const float vectors[] = {\n";
+  char buf[64];
+  for(unsigned bin = 0; bin < o.bins; ++bin) {
+    out << "    // importance index " << bin << "\n   ";
+    for(unsigned col = 0; col < columns; ++col) {
+      const std::size_t k = bin * columns + col;
+      const double a = count[k] ? sum[2 * k] / count[k] : 0., b = count[k] ? sum[2 * k + 1] / count[k] : 0.;
+      std::snprintf(buf, sizeof buf, " %.6ff, %.6ff,", a, b);
+      out << buf;
+      if(col % 4 == 3 && col + 1 < columns) out << "\n   ";
+    }
+    out << "\n";
+  }
+  out << "  };\n  static const Correction_table table = { " << o.bins << "u, " << o.structural_bits
+      << ", vectors };\n  return table;\n}\n\n"
+         "} // namespace Penrose\n} // namespace internal\n} // namespace CGAL\n\n"
+         "#endif // CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_CORRECTION_VECTORS_H\n";
+  return out ? 0 : 1;
+}

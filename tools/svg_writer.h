@@ -1,0 +1,66 @@
+// Copyright (c) 2026 The Penrose_Delaunay_triangulation_2 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// A minimal SVG canvas for the command-line tools: a region of the plane
+// mapped onto a picture, y up, with an optional background image.
+
+#ifndef PENROSE_TOOLS_SVG_WRITER_H
+#define PENROSE_TOOLS_SVG_WRITER_H
+
+#include <cstdio>
+#include <fstream>
+#include <stdexcept>
+#include <string>
+
+namespace penrose_tools {
+
+class Svg_writer
+{
+public:
+  Svg_writer(const std::string& file, double xmin, double ymin, double xmax, double ymax, double width_px = 1024.)
+    : out_(file), xmin_(xmin), ymax_(ymax), k_(width_px / (xmax - xmin)),
+      w_(width_px), h_((ymax - ymin) * k_)
+  {
+    if(!out_) throw std::runtime_error(file + ": cannot open for writing");
+    out_ << "<svg xmlns=\"http://www.w3.org/2000/svg\" xmlns:xlink=\"http://www.w3.org/1999/xlink\" width=\""
+         << w_ << "\" height=\"" << h_ << "\" viewBox=\"0 0 " << w_ << ' ' << h_ << "\">\n"
+         << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+  }
+  ~Svg_writer() { out_ << "</svg>\n"; }
+
+  void background_image(const std::string& href)
+  {
+    out_ << "<image xlink:href=\"" << href << "\" x=\"0\" y=\"0\" width=\"" << w_ << "\" height=\"" << h_
+         << "\" preserveAspectRatio=\"none\" opacity=\"0.6\"/>\n";
+  }
+
+  void begin_group(const std::string& style) { out_ << "<g " << style << ">\n"; }
+  void end_group() { out_ << "</g>\n"; }
+
+  void dot(double x, double y, double r)
+  {
+    std::snprintf(buf_, sizeof buf_, "<circle cx=\"%.2f\" cy=\"%.2f\" r=\"%.2f\"/>\n", u(x), v(y), r);
+    out_ << buf_;
+  }
+
+  void segment(double x0, double y0, double x1, double y1)
+  {
+    std::snprintf(buf_, sizeof buf_, "<line x1=\"%.2f\" y1=\"%.2f\" x2=\"%.2f\" y2=\"%.2f\"/>\n",
+                  u(x0), v(y0), u(x1), v(y1));
+    out_ << buf_;
+  }
+
+  bool good() const { return bool(out_); }
+
+private:
+  double u(double x) const { return (x - xmin_) * k_; }
+  double v(double y) const { return (ymax_ - y) * k_; }
+
+  std::ofstream out_;
+  double xmin_, ymax_, k_, w_, h_;
+  char buf_[160];
+};
+
+} // namespace penrose_tools
+
+#endif // PENROSE_TOOLS_SVG_WRITER_H
