@@ -40,11 +40,9 @@ struct Fibonacci_tables
   }
 };
 
-inline const Fibonacci_tables& fibonacci()
-{
-  static const Fibonacci_tables tables;
-  return tables;
-}
+// initialised before main, so that reading it costs no guard
+inline const Fibonacci_tables fibonacci_tables;
+inline const Fibonacci_tables& fibonacci() { return fibonacci_tables; }
 
 // Threshold added by the pair appended at level `level`: the older bit of the
 // pair weighs F(2 level), the newer F(2 level + 1).

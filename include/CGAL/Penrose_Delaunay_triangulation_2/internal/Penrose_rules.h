@@ -45,11 +45,8 @@ struct Direction_table
   }
 };
 
-inline const Direction_table& directions()
-{
-  static const Direction_table table;
-  return table;
-}
+inline const Direction_table direction_table;
+inline const Direction_table& directions() { return direction_table; }
 
 // Corner indices 0..2 are the parent's p1..p3; 3 and 4 are its new vertices.
 struct New_vertex_rule

@@ -20,6 +20,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace CGAL {
 namespace internal {
@@ -83,6 +84,12 @@ public:
     root_y_[2] = root_y_[0] + phi * root_scale_ * u.y[17];
     // A sample never moves more than this many scales of the tile it is born in.
     margin_factor_ = (std::max)(1., table_ == nullptr ? 0. : table_->max_length());
+    max_density_ = fibonacci().level_importance[max_level + 1] / importance_per_density_;
+    structural_bits_ = table_ ? table_->structural_bits : default_structural_bits;
+    importance_bins_ = table_ ? table_->importance_bins : 21u;
+    structural_index_.resize(std::size_t(1) << structural_bits_);
+    for(std::size_t c = 0; c < structural_index_.size(); ++c)
+      structural_index_[c] = fibonacci_value(c, structural_bits_);
   }
 
   static void check_region(double xmin, double ymin, double xmax, double ymax)
@@ -129,8 +136,10 @@ public:
       imax = checked(bound_(cx0, cy0, cx1, cy1), 0.5 * (cx0 + cx1), 0.5 * (cy0 + cy1))
              * importance_per_density_;
     } else {
-      imax = (std::max)({importance[0], importance[1], importance[2],
-                         this->importance((x[0] + x[1] + x[2]) / 3., (y[0] + y[1] + y[2]) / 3.)});
+      // the centroid is probed only when the corners do not decide already
+      imax = (std::max)({importance[0], importance[1], importance[2]});
+      if(!needs_level_above(imax, level))
+        imax = this->importance((x[0] + x[1] + x[2]) / 3., (y[0] + y[1] + y[2]) / 3.);
     }
     if(!needs_level_above(imax, level)) return false;
     if(level >= max_level)
@@ -154,10 +163,8 @@ public:
     s.leaf_level = leaf;
     s.leaf_code = b.code << (2 * shift);
     s.leaf_direction = static_cast<std::uint8_t>((b.direction + 10 * shift) % 20);
-    const int bits = table_ ? table_->structural_bits : default_structural_bits;
-    const unsigned bins = table_ ? table_->importance_bins : 21u;
-    s.structural_index = fibonacci_value(s.leaf_code & ((std::uint64_t(1) << bits) - 1), bits);
-    s.importance_index = importance_index(importance, bins);
+    s.structural_index = structural_index_[s.leaf_code & (structural_index_.size() - 1)];
+    s.importance_index = importance_index(importance, importance_bins_);
     s.x = x; s.y = y;
     if(table_ != nullptr && table_->vectors != nullptr) {
       const float* ab = table_->at(s.importance_index, s.structural_index);
@@ -177,9 +184,13 @@ public:
 
   double checked(double v, double x, double y) const
   {
-    if(v >= 0. && v < std::numeric_limits<double>::infinity() &&
-       v * importance_per_density_ < fibonacci().level_importance[max_level + 1])
-      return v;
+    if(v >= 0. && v < max_density_) return v;
+    throw_bad_density(v, x, y);
+  }
+
+private:
+  [[noreturn]] void throw_bad_density(double v, double x, double y) const
+  {
     std::ostringstream msg;
     msg.precision(17);
     msg << "Penrose_importance_sampler: the density at (" << x << ", " << y << ") is " << v;
@@ -190,7 +201,6 @@ public:
     throw std::invalid_argument(msg.str());
   }
 
-private:
   double clamp_x(double x) const { return (std::min)((std::max)(x, xmin_), xmax_); }
   double clamp_y(double y) const { return (std::min)((std::max)(y, ymin_), ymax_); }
 
@@ -201,6 +211,10 @@ private:
   double root_scale_;
   double importance_per_density_;
   double margin_factor_;
+  double max_density_;  // beyond it the importance needs more than max_level levels
+  int structural_bits_;
+  unsigned importance_bins_;
+  std::vector<unsigned> structural_index_;  // Fibonacci value of every low code
   std::array<double, max_level + 2> scale_;
   std::array<double, 3> root_x_, root_y_;
 };

@@ -1,0 +1,320 @@
+// Copyright (c) 2026 The Penrose_Delaunay_triangulation_2 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_H
+#define CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_H
+
+#include <CGAL/Penrose_importance_sampler.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Base_triangulation_builder.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Flat_mesh.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Flat_mesh_editing.h>
+
+#include <CGAL/Default.h>
+#include <CGAL/Delaunay_triangulation_2.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+#include <array>
+#include <cstddef>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+
+/*!
+\ingroup PkgPenroseDelaunayTriangulation2Ref
+
+The Delaunay triangulation of the points of a `Penrose_importance_sampler`,
+derived from the sampler's tile tree as in "Fast Delaunay-triangulated
+importance-sampled point sets", without locating a single point:
+
+1. the tile tree is built breadth first straight into a triangulation free of
+   T-edges (a new vertex on an edge splits the two triangles of that edge);
+2. the vertices that are not samples (inactive, or moved out of the region)
+   are removed, and each hole is filled greedily with exact orientation tests;
+3. the samples are moved by their correction vectors; a vertex whose star
+   would fold is removed and reinserted locally;
+4. Lawson flips, tested with the traits' `side_of_oriented_circle` and its
+   symbolic perturbation, make the triangulation Delaunay. The result is
+   exactly the triangulation that `Delaunay_triangulation_2::insert()` builds
+   from the same points, cocircular points included.
+
+Steps 1 to 3 run on a flat mesh, which is written once into the TDS. The
+triangulation is framed by three far vertices during the construction so that
+every vertex removed there is interior; the frame is removed last with
+`remove()`. A point that local repair cannot place (for instance one that
+coincides with another) is inserted with `insert()` at the end: such
+fallbacks are counted.
+
+It is a `Delaunay_triangulation_2<Gt, Tds>`: every operation of that class
+works on it after construction.
+
+\tparam Gt a model of `DelaunayTriangulationTraits_2` with exact predicates
+        (for example `Exact_predicates_inexact_constructions_kernel`,
+        `Exact_predicates_exact_constructions_kernel`,
+        `Projection_traits_xy_3<K>` for terrains).
+\tparam Tds a model of `TriangulationDataStructure_2`; `Default` means the one
+        of `Delaunay_triangulation_2<Gt>`.
+*/
+template <class Gt = Exact_predicates_inexact_constructions_kernel, class Tds_ = Default>
+class Penrose_Delaunay_triangulation_2
+  : public Delaunay_triangulation_2<Gt, typename Default::Get<Tds_, Triangulation_data_structure_2<
+                                          Triangulation_vertex_base_2<Gt>, Triangulation_face_base_2<Gt>>>::type>
+{
+  typedef typename Default::Get<Tds_, Triangulation_data_structure_2<
+    Triangulation_vertex_base_2<Gt>, Triangulation_face_base_2<Gt>>>::type Tds;
+  typedef Delaunay_triangulation_2<Gt, Tds> Base;
+  typedef internal::Penrose::Flat_mesh Flat_mesh;
+  typedef Flat_mesh::Index Index;
+
+public:
+  typedef typename Base::Geom_traits Geom_traits;
+  typedef typename Base::Triangulation_data_structure Triangulation_data_structure;
+  typedef typename Base::Point Point;
+  typedef typename Base::Vertex_handle Vertex_handle;
+  typedef typename Base::Face_handle Face_handle;
+
+  /// What the construction did.
+  struct Construction_statistics
+  {
+    std::size_t base_vertices = 0;    ///< vertices of the tile tree's triangulation
+    std::size_t removed_vertices = 0; ///< of those, removed (not samples of the region)
+    std::size_t repaired_vertices = 0;///< moved by removal and local reinsertion
+    std::size_t flips = 0;            ///< Lawson flips
+    std::size_t fallbacks = 0;        ///< points or vertices left to `insert()` / `remove()`
+  };
+
+  /// \name Creation
+  /// @{
+
+  /// An empty triangulation.
+  explicit Penrose_Delaunay_triangulation_2(const Gt& gt = Gt()) : Base(gt) {}
+
+  /// The triangulation of the points of `sampler`. Each point is made with
+  /// the traits' `Construct_point_2` from its two coordinates.
+  template <class SamplerTraits>
+  explicit Penrose_Delaunay_triangulation_2(const Penrose_importance_sampler<SamplerTraits>& sampler,
+                                            const Gt& gt = Gt())
+    : Base(gt)
+  {
+    auto construct = gt.construct_point_2_object();
+    build(sampler, [construct](double x, double y) { return construct(x, y); });
+  }
+
+  /// The triangulation of the points of `sampler`, each made by `lift(x, y)`,
+  /// for instance a 3D point with a height for `Projection_traits_xy_3`.
+  template <class SamplerTraits, class Lift>
+  Penrose_Delaunay_triangulation_2(const Penrose_importance_sampler<SamplerTraits>& sampler,
+                                   const Lift& lift, const Gt& gt = Gt())
+    : Base(gt)
+  {
+    build(sampler, lift);
+  }
+
+  /// Samples `density` over `region` (see `Penrose_importance_sampler` for
+  /// the named parameters) and triangulates the samples.
+  template <class Density, class NamedParameters = parameters::Default_named_parameters,
+            class G = Gt, class = typename G::Iso_rectangle_2>
+  Penrose_Delaunay_triangulation_2(const typename G::Iso_rectangle_2& region, const Density& density,
+                                   const NamedParameters& np = parameters::default_values())
+    : Penrose_Delaunay_triangulation_2(Penrose_importance_sampler<G>(region, density, np))
+  {}
+  /// @}
+
+  /*!
+  Clears the triangulation and builds that of the points of `sampler`, each
+  made by `lift(x, y)`. `on_vertex(v, sample)` is called for every vertex
+  created, with the `Penrose_importance_sampler::Sample` it comes from, for
+  instance to fill the info of a vertex base with info.
+  */
+  template <class SamplerTraits, class Lift, class OnVertex>
+  void build(const Penrose_importance_sampler<SamplerTraits>& sampler, const Lift& lift, OnVertex on_vertex)
+  {
+    const internal::Penrose::Sampling_context& context = sampler.context();
+    Flat_mesh mesh;
+    std::vector<internal::Penrose::Vertex_sample> vertex_samples;
+    internal::Penrose::Base_triangulation_builder(context, mesh, vertex_samples).build();
+    stats_ = Construction_statistics();
+    stats_.base_vertices = mesh.x.size();
+
+    // which vertices are samples of the region, and where they go
+    const std::size_t n = mesh.x.size();
+    std::vector<internal::Penrose::Placed_sample> placed(n);
+    std::vector<char> keep(n, 0);
+    for(std::size_t v = 0; v < n; ++v) {
+      const internal::Penrose::Vertex_sample& s = vertex_samples[v];
+      keep[v] = s.is_sample && context.activate(mesh.x[v], mesh.y[v], s.importance, s.birth, placed[v])
+                && context.contains(placed[v].x, placed[v].y);
+    }
+    const std::array<Index, 3> frame = add_frame(mesh, context);
+
+    internal::Penrose::Flat_mesh_editor editor(mesh);
+    std::vector<Index> stuck, unplaced;
+    for(std::size_t v = 0; v < n; ++v)
+      if(!keep[v]) {
+        if(editor.remove_vertex(Index(v))) ++stats_.removed_vertices;
+        else stuck.push_back(Index(v));
+      }
+    for(std::size_t v = 0; v < n; ++v) {
+      if(!keep[v] || (placed[v].x == mesh.x[v] && placed[v].y == mesh.y[v])) continue;
+      bool repaired = false;
+      if(!editor.move_vertex(Index(v), placed[v].x, placed[v].y, repaired)) unplaced.push_back(Index(v));
+      if(repaired) ++stats_.repaired_vertices;
+    }
+
+    std::vector<Vertex_handle> handle = write_tds(mesh, lift);
+    restore_delaunay();
+    for(Index v : stuck) this->remove(handle[v]);
+    for(Index w : frame) this->remove(handle[w]);
+    for(Index v : unplaced) handle[v] = this->insert(lift(placed[v].x, placed[v].y));
+    stats_.fallbacks = stuck.size() + unplaced.size();
+    for(std::size_t v = 0; v < n; ++v)
+      if(keep[v] && handle[v] != Vertex_handle()) on_vertex(handle[v], sampler.to_sample(placed[v]));
+  }
+
+  template <class SamplerTraits, class Lift>
+  void build(const Penrose_importance_sampler<SamplerTraits>& sampler, const Lift& lift)
+  {
+    build(sampler, lift, [](Vertex_handle, const typename Penrose_importance_sampler<SamplerTraits>::Sample&) {});
+  }
+
+  /// \name Statistics of the construction
+  /// @{
+  const Construction_statistics& construction_statistics() const { return stats_; }
+  std::size_t number_of_flips() const { return stats_.flips; }
+  std::size_t number_of_fallbacks() const { return stats_.fallbacks; }
+  /// @}
+
+private:
+  // Three far vertices and the triangles between them and the root tile, so
+  // that every vertex of the tile tree is interior.
+  static std::array<Index, 3> add_frame(Flat_mesh& m, const internal::Penrose::Sampling_context& c)
+  {
+    // the root's boundary edges, a -> b counter-clockwise, grouped by root edge
+    double cx = 0., cy = 0.;
+    for(int i = 0; i < 3; ++i) { cx += c.root_x(i) / 3.; cy += c.root_y(i) / 3.; }
+    std::array<Index, 3> w;
+    for(int e = 0; e < 3; ++e) {
+      const double mx = 0.5 * (c.root_x(e) + c.root_x((e + 1) % 3)) - cx;
+      const double my = 0.5 * (c.root_y(e) + c.root_y((e + 1) % 3)) - cy;
+      w[e] = m.add_vertex(cx + 8. * mx, cy + 8. * my);
+    }
+    // root corner i is vertex i; which root edge does a boundary edge lie on?
+    auto root_edge_of = [&](Index a, Index b) {
+      for(int e = 0; e < 3; ++e) {
+        const double ex = c.root_x((e + 1) % 3) - c.root_x(e), ey = c.root_y((e + 1) % 3) - c.root_y(e);
+        const double da = ex * (m.y[a] - c.root_y(e)) - ey * (m.x[a] - c.root_x(e));
+        const double db = ex * (m.y[b] - c.root_y(e)) - ey * (m.x[b] - c.root_x(e));
+        const double tol = 1e-9 * (ex * ex + ey * ey);
+        if(std::abs(da) <= tol && std::abs(db) <= tol) return e;
+      }
+      return -1;
+    };
+    std::vector<std::array<Index, 2>> boundary;  // (face, edge index)
+    const std::size_t nf = m.faces.size();
+    for(Index f = 0; f < nf; ++f)
+      if(m.face_alive[f])
+        for(int i = 0; i < 3; ++i)
+          if(m.faces[f].n[i] == Flat_mesh::null) boundary.push_back({f, Index(i)});
+    // fan faces (b, a, w[e]) outside each boundary edge a -> b
+    std::vector<std::array<Index, 3>> outer;  // (face, vertex a, vertex b)
+    for(const auto& fe : boundary) {
+      const Index f = fe[0]; const int i = int(fe[1]);
+      const Index a = m.faces[f].v[Flat_mesh::ccw(i)], b = m.faces[f].v[Flat_mesh::cw(i)];
+      const int e = root_edge_of(a, b);
+      CGAL_assertion(e >= 0);
+      const Index g = m.create_face(b, a, w[e]);
+      m.link(g, 2, f, i);
+      outer.push_back({g, a, b});
+    }
+    // corner faces (w[e-1], w[e], corner e)
+    for(int e = 0; e < 3; ++e) {
+      const Index g = m.create_face(w[(e + 2) % 3], w[e], Index(e));
+      outer.push_back({g, Flat_mesh::null, Flat_mesh::null});
+    }
+    // glue the outer faces to each other along their shared edges
+    for(std::size_t p = 0; p < outer.size(); ++p)
+      for(std::size_t q = p + 1; q < outer.size(); ++q)
+        for(int i = 0; i < 3; ++i) {
+          const Index f = outer[p][0], g = outer[q][0];
+          if(m.faces[f].n[i] != Flat_mesh::null) continue;
+          const int j = m.edge_index(g, m.faces[f].v[Flat_mesh::cw(i)], m.faces[f].v[Flat_mesh::ccw(i)]);
+          if(j >= 0) m.link(f, i, g, j);
+        }
+    return w;
+  }
+
+  template <class Lift>
+  std::vector<Vertex_handle> write_tds(const Flat_mesh& m, const Lift& lift)
+  {
+    Triangulation_data_structure& tds = this->tds();
+    tds.clear();
+    const Vertex_handle infinite = tds.create_vertex();
+    this->set_infinite_vertex(infinite);
+    tds.set_dimension(2);
+    std::vector<Vertex_handle> vh(m.x.size());
+    for(std::size_t v = 0; v < m.x.size(); ++v)
+      if(m.vertex_face[v] != Flat_mesh::null) {
+        vh[v] = tds.create_vertex();
+        vh[v]->set_point(lift(m.x[v], m.y[v]));
+      }
+    std::vector<Face_handle> fh(m.faces.size());
+    for(std::size_t f = 0; f < m.faces.size(); ++f)
+      if(m.face_alive[f]) {
+        const auto& F = m.faces[f];
+        fh[f] = tds.create_face(vh[F.v[0]], vh[F.v[1]], vh[F.v[2]]);
+      }
+    std::vector<std::pair<Vertex_handle, Face_handle>> hull;  // infinite face (inf, b, a), keyed by b
+    for(std::size_t f = 0; f < m.faces.size(); ++f)
+      if(m.face_alive[f])
+        for(int i = 0; i < 3; ++i) {
+          const Index g = m.faces[f].n[i];
+          if(g != Flat_mesh::null) { fh[f]->set_neighbor(i, fh[g]); continue; }
+          const Vertex_handle a = vh[m.faces[f].v[Flat_mesh::ccw(i)]], b = vh[m.faces[f].v[Flat_mesh::cw(i)]];
+          const Face_handle h = tds.create_face(infinite, b, a);
+          h->set_neighbor(0, fh[f]);
+          fh[f]->set_neighbor(i, h);
+          hull.emplace_back(b, h);
+        }
+    // (inf, b, a) borders (inf, a, c) across the edge inf-a, and (inf, d, b) across inf-b
+    for(auto& bh : hull)
+      for(auto& other : hull)
+        if(other.second->vertex(1) == bh.second->vertex(2)) {
+          bh.second->set_neighbor(1, other.second);
+          other.second->set_neighbor(2, bh.second);
+        }
+    for(std::size_t v = 0; v < m.x.size(); ++v)
+      if(vh[v] != Vertex_handle()) vh[v]->set_face(fh[m.vertex_face[v]]);
+    infinite->set_face(hull.front().second);
+    return vh;
+  }
+
+  // Lawson flips until every edge is locally Delaunay.
+  void restore_delaunay()
+  {
+    std::vector<std::pair<Face_handle, int>> stack;
+    for(auto f = this->finite_faces_begin(); f != this->finite_faces_end(); ++f)
+      for(int i = 0; i < 3; ++i)
+        if(&*f < &*f->neighbor(i)) stack.emplace_back(f, i);
+    while(!stack.empty()) {
+      const Face_handle f = stack.back().first;
+      const int i = stack.back().second;
+      stack.pop_back();
+      const Face_handle g = f->neighbor(i);
+      if(this->is_infinite(f) || this->is_infinite(g)) continue;
+      if(this->side_of_oriented_circle(g, f->vertex(i)->point(), true) != ON_POSITIVE_SIDE) continue;
+      this->flip(f, i);
+      ++stats_.flips;
+      // f and g now share the new diagonal; recheck the four edges around them
+      for(int k = 0; k < 3; ++k) {
+        if(f->neighbor(k) != g) stack.emplace_back(f, k);
+        if(g->neighbor(k) != f) stack.emplace_back(g, k);
+      }
+    }
+  }
+
+  Construction_statistics stats_;
+};
+
+} // namespace CGAL
+
+#endif // CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_H

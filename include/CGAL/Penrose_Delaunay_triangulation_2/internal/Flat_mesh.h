@@ -1,0 +1,151 @@
+// Copyright (c) 2026 The Penrose_Delaunay_triangulation_2 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// A triangle mesh in flat arrays, with CGAL's conventions (vertices counter-
+// clockwise; neighbour i opposite vertex i), on which the base triangulation
+// is built and edited before it is written once into a TDS. Orientation tests
+// are exact (filtered) on the double coordinates.
+
+#ifndef CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_FLAT_MESH_H
+#define CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_FLAT_MESH_H
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/assertions.h>
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace CGAL {
+namespace internal {
+namespace Penrose {
+
+class Flat_mesh
+{
+public:
+  typedef std::uint32_t Index;
+  static constexpr Index null = 0xffffffffu;
+
+  struct Face
+  {
+    std::array<Index, 3> v;
+    std::array<Index, 3> n;
+  };
+
+  static int ccw(int i) { return i == 2 ? 0 : i + 1; }
+  static int cw(int i) { return i == 0 ? 2 : i - 1; }
+
+  // vertices
+  std::vector<double> x, y;
+  std::vector<Index> vertex_face;  // one incident face, or null for a removed vertex
+
+  std::vector<Face> faces;
+  std::vector<char> face_alive;
+
+  Index add_vertex(double px, double py)
+  {
+    x.push_back(px); y.push_back(py); vertex_face.push_back(null);
+    return Index(x.size() - 1);
+  }
+
+  Index create_face(Index a, Index b, Index c)
+  {
+    Index f;
+    if(free_.empty()) {
+      f = Index(faces.size());
+      faces.push_back(Face());
+      face_alive.push_back(1);
+    } else {
+      f = free_.back();
+      free_.pop_back();
+      face_alive[f] = 1;
+    }
+    faces[f].v = {{a, b, c}};
+    faces[f].n = {{null, null, null}};
+    vertex_face[a] = vertex_face[b] = vertex_face[c] = f;
+    return f;
+  }
+
+  // Overwrites face f in place with new vertices (keeps it alive, clears its neighbours).
+  void reset_face(Index f, Index a, Index b, Index c)
+  {
+    faces[f].v = {{a, b, c}};
+    faces[f].n = {{null, null, null}};
+    vertex_face[a] = vertex_face[b] = vertex_face[c] = f;
+  }
+
+  void delete_face(Index f)
+  {
+    face_alive[f] = 0;
+    free_.push_back(f);
+  }
+
+  void link(Index f, int i, Index g, int j)
+  {
+    faces[f].n[i] = g;
+    if(g != null) faces[g].n[j] = f;
+  }
+
+  int index_of_vertex(Index f, Index v) const
+  {
+    const Face& F = faces[f];
+    return F.v[0] == v ? 0 : (F.v[1] == v ? 1 : 2);
+  }
+
+  int index_of_neighbor(Index f, Index g) const
+  {
+    const Face& F = faces[f];
+    return F.n[0] == g ? 0 : (F.n[1] == g ? 1 : 2);
+  }
+
+  // The edge of face f from vertex a to vertex b, as the index of the opposite vertex.
+  int edge_index(Index f, Index a, Index b) const
+  {
+    const Face& F = faces[f];
+    for(int i = 0; i < 3; ++i)
+      if(F.v[ccw(i)] == a && F.v[cw(i)] == b) return i;
+    return -1;
+  }
+
+  Orientation orientation(Index a, Index b, Index c) const
+  {
+    typedef Exact_predicates_inexact_constructions_kernel K;
+    return K::Orientation_2()(K::Point_2(x[a], y[a]), K::Point_2(x[b], y[b]), K::Point_2(x[c], y[c]));
+  }
+
+  Orientation orientation(Index a, Index b, double px, double py) const
+  {
+    typedef Exact_predicates_inexact_constructions_kernel K;
+    return K::Orientation_2()(K::Point_2(x[a], y[a]), K::Point_2(x[b], y[b]), K::Point_2(px, py));
+  }
+
+  // Splits face f at vertex m, which lies on its edge i (opposite vertex i):
+  // f keeps one half, a new face takes the other. Returns the new face, which
+  // holds the part of the edge next to vertex cw(i).
+  Index split_face_on_edge(Index f, int i, Index m)
+  {
+    const Face F = faces[f];
+    const Index apex = F.v[i], a = F.v[ccw(i)], b = F.v[cw(i)];
+    // f becomes (apex, a, m); g becomes (apex, m, b)
+    const Index g = create_face(apex, m, b);
+    reset_face(f, apex, a, m);
+    link(g, 0, null, 0);              // the half-edge m-b: set by the caller
+    link(g, 1, F.n[ccw(i)], F.n[ccw(i)] == null ? 0 : index_of_neighbor(F.n[ccw(i)], f));
+    link(g, 2, f, 1);                 // shared edge apex-m
+    link(f, 2, F.n[cw(i)], F.n[cw(i)] == null ? 0 : index_of_neighbor(F.n[cw(i)], f));
+    // f's edge a-m (index 0) is set by the caller too
+    vertex_face[apex] = f; vertex_face[a] = f; vertex_face[m] = f; vertex_face[b] = g;
+    return g;
+  }
+
+  std::size_t number_of_free_faces() const { return free_.size(); }
+
+private:
+  std::vector<Index> free_;
+};
+
+} // namespace Penrose
+} // namespace internal
+} // namespace CGAL
+
+#endif // CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_FLAT_MESH_H

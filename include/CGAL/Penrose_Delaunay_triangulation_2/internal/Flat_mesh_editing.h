@@ -1,0 +1,223 @@
+// Copyright (c) 2026 The Penrose_Delaunay_triangulation_2 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Local edits of a Flat_mesh that keep it a valid triangulation: removing an
+// interior vertex and filling its star greedily (section 3.3 of the paper),
+// and moving a vertex, by removal and reinsertion where its new position
+// would fold its star (section 3.4). Every decision is an exact orientation
+// test, so points that the Penrose tiling makes collinear are never joined
+// by a flat triangle.
+
+#ifndef CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_FLAT_MESH_EDITING_H
+#define CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_FLAT_MESH_EDITING_H
+
+#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Flat_mesh.h>
+
+#include <array>
+#include <vector>
+
+namespace CGAL {
+namespace internal {
+namespace Penrose {
+
+class Flat_mesh_editor
+{
+public:
+  typedef Flat_mesh::Index Index;
+  static constexpr Index null = Flat_mesh::null;
+
+  explicit Flat_mesh_editor(Flat_mesh& m) : m_(m) {}
+
+  // Removes interior vertex v. Returns false, changing nothing, if v is on the
+  // boundary or its star cannot be filled.
+  bool remove_vertex(Index v)
+  {
+    if(!collect_star(v)) return false;
+    if(!plan_ears()) return false;
+    for(Index f : star_) m_.delete_face(f);
+    apply_ears();
+    m_.vertex_face[v] = null;
+    return true;
+  }
+
+  // Moves vertex v to (px, py). Returns false if the point cannot be placed
+  // (it coincides with another vertex, or lies outside the mesh); v is then
+  // removed from the mesh.
+  bool move_vertex(Index v, double px, double py, bool& repaired)
+  {
+    repaired = false;
+    if(!collect_star(v)) return false;
+    bool fits = true;
+    for(std::size_t i = 0; i < ring_.size() && fits; ++i)
+      fits = m_.orientation(ring_[i], ring_[(i + 1) % ring_.size()], px, py) == POSITIVE;
+    if(fits) { m_.x[v] = px; m_.y[v] = py; return true; }
+    repaired = true;
+    const Index start = ring_[0];
+    if(!remove_vertex(v)) return false;
+    m_.x[v] = px; m_.y[v] = py;
+    return insert_vertex(v, m_.vertex_face[start]);
+  }
+
+  // Inserts the (detached) vertex v, whose coordinates are set, walking from face f.
+  bool insert_vertex(Index v, Index f)
+  {
+    int on_edge = -1;
+    f = locate(m_.x[v], m_.y[v], f, on_edge);
+    if(f == null) return false;
+    if(on_edge < 0) split_in_three(f, v);
+    else if(!split_edge(f, on_edge, v)) return false;
+    return true;
+  }
+
+private:
+  // Ring of the star of v, counter-clockwise, with the faces across its edges.
+  bool collect_star(Index v)
+  {
+    star_.clear(); ring_.clear(); across_.clear();
+    const Index f0 = m_.vertex_face[v];
+    if(f0 == null) return false;
+    Index f = f0;
+    do {
+      const Flat_mesh::Face& F = m_.faces[f];
+      const int i = m_.index_of_vertex(f, v);
+      const Index a = F.v[Flat_mesh::ccw(i)], b = F.v[Flat_mesh::cw(i)];
+      const Index g = F.n[i];  // null where the ring edge is on the boundary
+      star_.push_back(f);
+      ring_.push_back(a);
+      across_.push_back({g, g == null ? 0 : m_.edge_index(g, b, a)});
+      f = F.n[Flat_mesh::ccw(i)];
+      if(f == null || star_.size() > 4096) return false;
+    } while(f != f0);
+    return ring_.size() >= 3;
+  }
+
+  // Chooses the ears that triangulate the ring, without touching the mesh.
+  bool plan_ears()
+  {
+    ears_.clear();
+    std::vector<int> idx(ring_.size());
+    for(std::size_t i = 0; i < idx.size(); ++i) idx[i] = int(i);
+    std::size_t start = 0;
+    while(idx.size() > 3) {
+      bool found = false;
+      const std::size_t n = idx.size();
+      for(std::size_t s = 0; s < n && !found; ++s) {
+        const std::size_t t = (start + s) % n;
+        const int p = idx[(t + n - 1) % n], q = idx[t], r = idx[(t + 1) % n];
+        if(!is_ear(idx, p, q, r)) continue;
+        ears_.push_back({p, q, r});
+        idx.erase(idx.begin() + std::ptrdiff_t(t));
+        start = t % idx.size();
+        found = true;
+      }
+      if(!found) return false;
+    }
+    if(m_.orientation(ring_[idx[0]], ring_[idx[1]], ring_[idx[2]]) != POSITIVE) return false;
+    ears_.push_back({idx[0], idx[1], idx[2]});
+    return true;
+  }
+
+  bool is_ear(const std::vector<int>& idx, int p, int q, int r) const
+  {
+    const Index a = ring_[p], b = ring_[q], c = ring_[r];
+    if(m_.orientation(a, b, c) != POSITIVE) return false;
+    for(int u : idx) {
+      if(u == p || u == q || u == r) continue;
+      const Index w = ring_[u];
+      if(m_.orientation(a, b, w) != NEGATIVE && m_.orientation(b, c, w) != NEGATIVE &&
+         m_.orientation(c, a, w) != NEGATIVE)
+        return false;
+    }
+    return true;
+  }
+
+  // Creates the planned faces, gluing each to the ring's outside or to the
+  // ear cut before it across the polygon edge it closes.
+  void apply_ears()
+  {
+    const std::size_t k = ring_.size();
+    // the face and edge across the polygon edge that starts at ring index i
+    std::vector<std::pair<Index, int>> side(across_.begin(), across_.end());
+    std::vector<int> next(k);
+    for(std::size_t i = 0; i < k; ++i) next[i] = int((i + 1) % k);
+    for(const auto& e : ears_) {
+      const int p = e[0], q = e[1], r = e[2];
+      const Index f = m_.create_face(ring_[p], ring_[q], ring_[r]);
+      glue(f, 2, side[p]);  // edge p -> q
+      glue(f, 0, side[q]);  // edge q -> r
+      if(next[q] == r && next[r] == p) { glue(f, 1, side[r]); break; }  // the last triangle
+      side[p] = {f, 1};     // the new polygon edge p -> r
+      next[p] = r;
+    }
+  }
+
+  void glue(Index f, int i, const std::pair<Index, int>& other)
+  {
+    m_.faces[f].n[i] = other.first;
+    if(other.first != null) m_.faces[other.first].n[other.second] = f;
+  }
+
+  // Walks from face f to the face containing (px, py). on_edge is set to the
+  // index of the edge the point lies on, or -1 inside. Null if the point is
+  // outside the mesh or on a vertex.
+  Index locate(double px, double py, Index f, int& on_edge) const
+  {
+    for(int step = 0; f != null && step < 100000; ++step) {
+      const Flat_mesh::Face& F = m_.faces[f];
+      int zero = -1, zeros = 0;
+      bool moved = false;
+      for(int s = 0; s < 3 && !moved; ++s) {
+        const int i = (s + step) % 3;
+        const Orientation o = m_.orientation(F.v[Flat_mesh::ccw(i)], F.v[Flat_mesh::cw(i)], px, py);
+        if(o == NEGATIVE) { f = F.n[i]; moved = true; }
+        else if(o == COLLINEAR) { zero = i; ++zeros; }
+      }
+      if(moved) continue;
+      if(zeros >= 2) return null;  // on a vertex
+      on_edge = zero;
+      return f;
+    }
+    return null;
+  }
+
+  void split_in_three(Index f, Index v)
+  {
+    const Flat_mesh::Face F = m_.faces[f];
+    const Index g = m_.create_face(v, F.v[1], F.v[2]);
+    const Index h = m_.create_face(F.v[0], v, F.v[2]);
+    m_.reset_face(f, F.v[0], F.v[1], v);
+    glue(g, 0, {F.n[0], F.n[0] == null ? 0 : m_.index_of_neighbor(F.n[0], f)});
+    glue(h, 1, {F.n[1], F.n[1] == null ? 0 : m_.index_of_neighbor(F.n[1], f)});
+    glue(f, 2, {F.n[2], F.n[2] == null ? 0 : m_.index_of_neighbor(F.n[2], f)});
+    glue(g, 1, {h, 0});
+    glue(g, 2, {f, 0});
+    glue(h, 2, {f, 1});
+    m_.vertex_face[F.v[0]] = f; m_.vertex_face[F.v[1]] = f; m_.vertex_face[F.v[2]] = g;
+    m_.vertex_face[v] = f;
+  }
+
+  // Splits the two faces of edge i of f at v, which lies on the edge.
+  bool split_edge(Index f, int i, Index v)
+  {
+    const Index g = m_.faces[f].n[i];
+    if(g == null) return false;
+    const Index a = m_.faces[f].v[Flat_mesh::ccw(i)], b = m_.faces[f].v[Flat_mesh::cw(i)];
+    const int j = m_.edge_index(g, b, a);
+    const Index f2 = m_.split_face_on_edge(f, i, v);  // f: a-v, f2: v-b
+    const Index g2 = m_.split_face_on_edge(g, j, v);  // g: b-v, g2: v-a
+    glue(f, 0, {g2, 0});
+    glue(f2, 0, {g, 0});
+    return true;
+  }
+
+  Flat_mesh& m_;
+  std::vector<Index> star_, ring_;
+  std::vector<std::pair<Index, int>> across_;
+  std::vector<std::array<int, 3>> ears_;
+};
+
+} // namespace Penrose
+} // namespace internal
+} // namespace CGAL
+
+#endif // CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_FLAT_MESH_EDITING_H

@@ -1,0 +1,256 @@
+// Copyright (c) 2026 The Penrose_Delaunay_triangulation_2 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Penrose_Delaunay_triangulation_2 against CGAL's own triangulators on the
+// same points: the edge sets must be equal, for many densities, sizes and
+// traits classes, and the triangulation must stay valid under edits.
+
+#include <CGAL/Penrose_Delaunay_triangulation_2.h>
+
+#include <CGAL/Delaunay_triangulation_2.h>
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Gmpq.h>
+#include <CGAL/Projection_traits_xy_3.h>
+#include <CGAL/Random.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Triangulation_hierarchy_2.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <functional>
+#include <map>
+#include <string>
+#include <set>
+#include <utility>
+#include <vector>
+
+namespace {
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel Epick;
+typedef Epick::Point_2 Point;
+typedef CGAL::Penrose_importance_sampler<Epick> Sampler;
+typedef std::array<double, 4> Edge_key;  // the two endpoints' (x, y), sorted
+typedef std::function<double(const Point&)> Density;
+
+template <class Triangulation, class XY>
+std::set<Edge_key> edge_set(const Triangulation& t, XY xy)
+{
+  std::set<Edge_key> edges;
+  for(auto e = t.finite_edges_begin(); e != t.finite_edges_end(); ++e) {
+    std::pair<double, double> a = xy(e->first->vertex(t.cw(e->second))->point());
+    std::pair<double, double> b = xy(e->first->vertex(t.ccw(e->second))->point());
+    if(b < a) std::swap(a, b);
+    edges.insert({a.first, a.second, b.first, b.second});
+  }
+  return edges;
+}
+
+std::pair<double, double> xy_of(const Point& p) { return {p.x(), p.y()}; }
+
+// The reference: CGAL's range insertion, and the Devillers hierarchy fed one
+// point at a time, on the sampler's points.
+void expect_same_as_cgal(const Sampler& sampler, const std::string& what)
+{
+  std::vector<Point> points;
+  sampler(std::back_inserter(points));
+  const CGAL::Penrose_Delaunay_triangulation_2<Epick> pdt(sampler);
+  ASSERT_TRUE(pdt.is_valid()) << what;
+  CGAL::Delaunay_triangulation_2<Epick> dt(points.begin(), points.end());
+  CGAL::Triangulation_hierarchy_2<CGAL::Delaunay_triangulation_2<Epick,
+    CGAL::Triangulation_data_structure_2<CGAL::Triangulation_hierarchy_vertex_base_2<
+      CGAL::Triangulation_vertex_base_2<Epick>>>>> hierarchy;
+  for(const Point& p : points) hierarchy.insert(p);
+  EXPECT_EQ(pdt.number_of_vertices(), dt.number_of_vertices()) << what;
+  EXPECT_EQ(pdt.dimension(), dt.dimension()) << what;
+  const std::set<Edge_key> mine = edge_set(pdt, xy_of);
+  EXPECT_TRUE(mine == edge_set(dt, xy_of)) << what << ": edges differ from Delaunay_triangulation_2";
+  EXPECT_TRUE(mine == edge_set(hierarchy, xy_of)) << what << ": edges differ from Triangulation_hierarchy_2";
+  EXPECT_LE(double(pdt.number_of_fallbacks()), 0.001 * double(points.size()) + 0.5) << what;
+}
+
+const Epick::Iso_rectangle_2 unit_square(0, 0, 1, 1);
+
+// A random smooth density: a few Gaussian bumps over a floor.
+Density random_density(int seed)
+{
+  CGAL::Random r(seed);
+  std::vector<std::array<double, 4>> bumps;
+  const int n = 1 + r.get_int(0, 6);
+  for(int i = 0; i < n; ++i)
+    bumps.push_back({r.get_double(0, 1), r.get_double(0, 1), r.get_double(0.02, 0.3), r.get_double(0.5, 20)});
+  const double floor = r.get_double(0, 0.3);
+  return [bumps, floor](const Point& p) {
+    double d = floor;
+    for(const auto& b : bumps) {
+      const double dx = p.x() - b[0], dy = p.y() - b[1];
+      d += b[3] * std::exp(-(dx * dx + dy * dy) / (2 * b[2] * b[2]));
+    }
+    return d;
+  };
+}
+
+} // namespace
+
+TEST(Triangulation, BuiltInDensitiesMatchCgal)
+{
+  const std::vector<std::pair<std::string, Density>> densities = {
+    {"constant", [](const Point&) { return 1.; }},
+    {"ramp", [](const Point& p) { return p.x(); }},
+    {"radial", [](const Point& p) {
+       const double r2 = (p.x() - .5) * (p.x() - .5) + (p.y() - .5) * (p.y() - .5);
+       return std::exp(-r2 / (2 * 0.04)) + 0.05; }}};
+  for(const auto& d : densities)
+    for(std::size_t n : {std::size_t(10), std::size_t(300), std::size_t(5000), std::size_t(100000)})
+      expect_same_as_cgal(Sampler(unit_square, d.second, CGAL::parameters::number_of_output_points(n)),
+                          d.first + " " + std::to_string(n));
+}
+
+TEST(Triangulation, RandomSmoothDensitiesMatchCgal)
+{
+  for(int seed = 1; seed <= 24; ++seed) {
+    const std::size_t n = std::size_t(50) << (seed % 8);  // 50 to 6400 points
+    const Epick::Iso_rectangle_2 region(-1, 2, -1 + 0.5 + 0.1 * seed, 3);
+    expect_same_as_cgal(Sampler(region, random_density(seed), CGAL::parameters::number_of_output_points(n)),
+                        "random density " + std::to_string(seed));
+  }
+}
+
+TEST(Triangulation, WithoutCorrectionCocircularPointsMatchCgal)
+{
+  // raw tile vertices: many collinear and cocircular subsets
+  for(std::size_t n : {std::size_t(2000), std::size_t(30000)})
+    expect_same_as_cgal(Sampler(unit_square, [](const Point&) { return 1.; },
+                                CGAL::parameters::use_correction_vectors(false).number_of_output_points(n)),
+                        "no correction " + std::to_string(n));
+}
+
+TEST(Triangulation, FewPointsHaveCgalsDimension)
+{
+  // tiny densities: 0, 1, 2, ... points
+  std::set<std::size_t> seen;
+  for(int k = 0; k < 60; ++k) {
+    const double scale = 0.05 * std::pow(1.07, k);
+    const Sampler s(unit_square, [](const Point& p) { return 1. + p.x(); },
+                    CGAL::parameters::density_control_factor(scale));
+    std::vector<Point> points;
+    s(std::back_inserter(points));
+    seen.insert(points.size());
+    expect_same_as_cgal(s, "scale " + std::to_string(scale));
+    const CGAL::Penrose_Delaunay_triangulation_2<Epick> pdt(s);
+    const int expected_dimension = points.size() < 3 ? int(points.size()) - 1 : 2;
+    if(points.size() < 3) EXPECT_EQ(pdt.dimension(), expected_dimension);
+  }
+  EXPECT_TRUE(seen.count(0) && seen.count(1) && seen.count(2));
+  // a density that is zero everywhere
+  const CGAL::Penrose_Delaunay_triangulation_2<Epick> empty(
+    Sampler(unit_square, [](const Point&) { return 0.; }));
+  EXPECT_EQ(empty.number_of_vertices(), 0u);
+  EXPECT_EQ(empty.dimension(), -1);
+  EXPECT_TRUE(empty.is_valid());
+}
+
+TEST(Triangulation, StaysValidUnderEdits)
+{
+  const Sampler s(unit_square, [](const Point& p) { return 1. + 4. * p.x() * p.y(); },
+                  CGAL::parameters::number_of_output_points(20000));
+  CGAL::Penrose_Delaunay_triangulation_2<Epick> pdt(s);
+  std::vector<Point> points;
+  s(std::back_inserter(points));
+  CGAL::Random r(7);
+  for(int i = 0; i < 300; ++i) {
+    const Point p(r.get_double(-0.2, 1.2), r.get_double(-0.2, 1.2));
+    pdt.insert(p);
+    points.push_back(p);
+  }
+  ASSERT_TRUE(pdt.is_valid());
+  std::vector<CGAL::Penrose_Delaunay_triangulation_2<Epick>::Vertex_handle> to_remove;
+  for(auto v = pdt.finite_vertices_begin(); v != pdt.finite_vertices_end() && to_remove.size() < 300; ++v)
+    if(r.get_int(0, 40) == 0) to_remove.push_back(v);
+  std::set<std::pair<double, double>> removed;
+  for(auto v : to_remove) { removed.insert(xy_of(v->point())); pdt.remove(v); }
+  ASSERT_TRUE(pdt.is_valid());
+  std::vector<Point> rest;
+  for(const Point& p : points) if(!removed.count(xy_of(p))) rest.push_back(p);
+  const CGAL::Delaunay_triangulation_2<Epick> dt(rest.begin(), rest.end());
+  EXPECT_TRUE(edge_set(pdt, xy_of) == edge_set(dt, xy_of));
+  // the rest of the Delaunay_triangulation_2 interface works on it
+  const auto v = pdt.nearest_vertex(Point(0.5, 0.5));
+  EXPECT_EQ(v->point(), dt.nearest_vertex(Point(0.5, 0.5))->point());
+  std::size_t voronoi_edges = 0;
+  for(auto e = pdt.finite_edges_begin(); e != pdt.finite_edges_end(); ++e)
+  {
+    const CGAL::Object o = pdt.dual(e);
+    if(CGAL::object_cast<Epick::Segment_2>(&o)) ++voronoi_edges;
+  }
+  EXPECT_GT(voronoi_edges, 0u);
+}
+
+namespace {
+template <class K>
+void expect_kernel_matches(const std::string& name)
+{
+  typedef typename K::Point_2 P;
+  const CGAL::Penrose_importance_sampler<K> s(typename K::Iso_rectangle_2(P(0, 0), P(2, 1)),
+    [](const P& p) { return 1. + CGAL::to_double(p.x()); }, CGAL::parameters::number_of_output_points(3000));
+  const CGAL::Penrose_Delaunay_triangulation_2<K> pdt(s);
+  ASSERT_TRUE(pdt.is_valid()) << name;
+  std::vector<P> points;
+  s(std::back_inserter(points));
+  const CGAL::Delaunay_triangulation_2<K> dt(points.begin(), points.end());
+  auto xy = [](const P& p) { return std::make_pair(CGAL::to_double(p.x()), CGAL::to_double(p.y())); };
+  EXPECT_TRUE(edge_set(pdt, xy) == edge_set(dt, xy)) << name;
+}
+} // namespace
+
+TEST(Traits, EpeckAndGmpqMatchCgal)
+{
+  expect_kernel_matches<CGAL::Exact_predicates_exact_constructions_kernel>("Epeck");
+  expect_kernel_matches<CGAL::Simple_cartesian<CGAL::Gmpq>>("Simple_cartesian<Gmpq>");
+}
+
+TEST(Traits, TerrainWithProjectionTraits)
+{
+  typedef CGAL::Projection_traits_xy_3<Epick> Gt;
+  typedef Epick::Point_3 P3;
+  auto height = [](double x, double y) { return std::sin(3 * x) * std::cos(2 * y); };
+  const Sampler s(Epick::Iso_rectangle_2(0, 0, 2, 1),
+                  [](const Point& p) { return 1. + 3. * p.x(); },
+                  CGAL::parameters::number_of_output_points(5000));
+  const CGAL::Penrose_Delaunay_triangulation_2<Gt> terrain(s, [&](double x, double y) { return P3(x, y, height(x, y)); });
+  ASSERT_TRUE(terrain.is_valid());
+  std::vector<P3> points;
+  for(auto v = terrain.finite_vertices_begin(); v != terrain.finite_vertices_end(); ++v) {
+    points.push_back(v->point());
+    EXPECT_EQ(v->point().z(), height(v->point().x(), v->point().y()));
+  }
+  const CGAL::Delaunay_triangulation_2<Gt> dt(points.begin(), points.end());
+  auto xy = [](const P3& p) { return std::make_pair(p.x(), p.y()); };
+  EXPECT_TRUE(edge_set(terrain, xy) == edge_set(dt, xy));
+  std::vector<Point> planar;
+  s(std::back_inserter(planar));
+  EXPECT_EQ(planar.size(), points.size());
+}
+
+TEST(Traits, VertexBaseWithTileInformation)
+{
+  typedef CGAL::Triangulation_vertex_base_with_info_2<std::pair<int, std::uint64_t>, Epick> Vb;
+  typedef CGAL::Triangulation_data_structure_2<Vb> Tds;
+  typedef CGAL::Penrose_Delaunay_triangulation_2<Epick, Tds> Pdt;
+  const Sampler s(unit_square, [](const Point& p) { return 1. + p.y(); }, CGAL::parameters::number_of_output_points(4000));
+  Pdt pdt;
+  pdt.build(s, [](double x, double y) { return Point(x, y); },
+            [](Pdt::Vertex_handle v, const Sampler::Sample& sample) { v->info() = {sample.level, sample.f_code}; });
+  ASSERT_TRUE(pdt.is_valid());
+  std::vector<Sampler::Sample> samples;
+  s.samples(std::back_inserter(samples));
+  std::map<std::pair<double, double>, std::pair<int, std::uint64_t>> expected;
+  for(const auto& q : samples) expected[xy_of(q.point)] = {q.level, q.f_code};
+  ASSERT_EQ(pdt.number_of_vertices(), expected.size());
+  for(auto v = pdt.finite_vertices_begin(); v != pdt.finite_vertices_end(); ++v)
+    EXPECT_EQ(v->info(), expected.at(xy_of(v->point())));
+}
