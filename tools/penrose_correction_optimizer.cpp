@@ -42,6 +42,8 @@ struct Options
   int runs_per_bin = 2;
   int rounds = 1;
   double separation = 0.;  // push apart Delaunay neighbours closer than this many d_max
+  int polish_rounds = 0;   // rounds of separation alone, after the Lloyd rounds
+  double push_weight = 1.; // weight, in a class average, of a point that was pushed
   std::string out;
 };
 
@@ -49,7 +51,7 @@ static void usage()
 {
   std::cerr << "usage: penrose_correction_optimizer --out FILE [--bins 21] [--structural-bits 6]\n"
                "         [--points 20000] [--iterations 30] [--runs-per-bin 2] [--rounds 1]\n"
-               "         [--separation 0]\n";
+               "         [--separation 0] [--polish-rounds 0] [--push-weight 1]\n";
   std::exit(2);
 }
 
@@ -88,7 +90,7 @@ static void lloyd_step(std::vector<K::Point_2>& p, const std::vector<bool>& fixe
 // Moves the two ends of every Delaunay edge shorter than `target` apart until
 // it has that length: close pairs are what the averages of Lloyd's moves
 // leave, and a per-class average then carries the separation into the table.
-static void separate(std::vector<K::Point_2>& p, const std::vector<bool>& fixed, double target)
+static std::vector<bool> separate(std::vector<K::Point_2>& p, const std::vector<bool>& fixed, double target)
 {
   std::vector<std::pair<K::Point_2, std::size_t>> indexed;
   indexed.reserve(p.size());
@@ -104,17 +106,20 @@ static void separate(std::vector<K::Point_2>& p, const std::vector<bool>& fixed,
     push[a->info()] = push[a->info()] - u;
     push[b->info()] = push[b->info()] + u;
   }
+  std::vector<bool> pushed(p.size(), false);
   for(std::size_t i = 0; i < p.size(); ++i)
-    if(!fixed[i]) p[i] = p[i] + push[i];
+    if(!fixed[i] && push[i] != K::Vector_2(0, 0)) { p[i] = p[i] + push[i]; pushed[i] = true; }
+  return pushed;
 }
 
 // One pass over all importance indices: the mean displacement, per class, from
 // the raw points to the relaxed positions of the points `start` corrects.
-static std::vector<float> relax_and_average(const Options& o, const P::Correction_table* start)
+static std::vector<float> relax_and_average(const Options& o, const P::Correction_table* start,
+                                            int iterations, double push_weight)
 {
   const unsigned columns = P::number_of_structural_indices(o.structural_bits);
   std::vector<double> sum(2 * o.bins * columns, 0.);
-  std::vector<std::size_t> count(o.bins * columns, 0);
+  std::vector<double> count(o.bins * columns, 0.);
   const double phi2 = P::golden_ratio * P::golden_ratio;
   // On the unit square about 0.1 I points come out: the level holding the target.
   const int level = int(std::floor(std::log1p(std::sqrt(5.) * 10. * o.points) / std::log(phi2)));
@@ -139,8 +144,9 @@ static std::vector<float> relax_and_average(const Options& o, const P::Correctio
         p.emplace_back(r.x, r.y);
         fixed.push_back(std::min({r.x, r.y, 1. - r.x, 1. - r.y}) < 3. * d_max);
       }
-      for(int it = 0; it < o.iterations; ++it) lloyd_step(p, fixed);
-      if(o.separation > 0.) separate(p, fixed, o.separation * d_max);
+      for(int it = 0; it < iterations; ++it) lloyd_step(p, fixed);
+      std::vector<bool> pushed(p.size(), false);
+      if(o.separation > 0.) pushed = separate(p, fixed, o.separation * d_max);
 
       const double band = 10. * d_max;
       const P::Direction_table& u = P::directions();
@@ -154,15 +160,16 @@ static std::vector<float> relax_and_average(const Options& o, const P::Correctio
         const unsigned is = P::fibonacci_value(r.leaf_code & ((1u << o.structural_bits) - 1), o.structural_bits);
         const unsigned iv = P::importance_index(r.importance, o.bins);
         const std::size_t k = iv * columns + is;
-        sum[2 * k] += (dx * u.x[d] + dy * u.y[d]) / sl;
-        sum[2 * k + 1] += (dx * u.x[e] + dy * u.y[e]) / sl;
-        ++count[k];
+        const double w = pushed[i] ? push_weight : 1.;
+        sum[2 * k] += w * (dx * u.x[d] + dy * u.y[d]) / sl;
+        sum[2 * k + 1] += w * (dx * u.x[e] + dy * u.y[e]) / sl;
+        count[k] += w;
       }
       std::cerr << "bin " << bin << " run " << run << ": " << raw.size() << " points\n";
     }
   std::vector<float> table(2 * o.bins * columns, 0.f);
   for(std::size_t k = 0; k < count.size(); ++k)
-    if(count[k]) {
+    if(count[k] > 0.) {
       table[2 * k] = float(sum[2 * k] / count[k]);
       table[2 * k + 1] = float(sum[2 * k + 1] / count[k]);
     }
@@ -186,6 +193,8 @@ int main(int argc, char** argv)
     else if(a == "--runs-per-bin") o.runs_per_bin = std::atoi(v);
     else if(a == "--rounds") o.rounds = std::atoi(v);
     else if(a == "--separation") o.separation = std::atof(v);
+    else if(a == "--polish-rounds") o.polish_rounds = std::atoi(v);
+    else if(a == "--push-weight") o.push_weight = std::atof(v);
     else if(a == "--out") o.out = v;
     else usage();
   }
@@ -196,9 +205,11 @@ int main(int argc, char** argv)
   // Round 0 relaxes the raw points; each later round relaxes the points that
   // the previous round's table corrects, and measures from the raw points again.
   std::vector<float> table;
-  for(int round = 0; round < o.rounds; ++round) {
+  for(int round = 0; round < o.rounds + o.polish_rounds; ++round) {
     const P::Correction_table current = {o.bins, o.structural_bits, table.data()};
-    table = relax_and_average(o, round == 0 ? nullptr : &current);
+    const bool polish = round >= o.rounds;
+    table = relax_and_average(o, round == 0 ? nullptr : &current, polish ? 0 : o.iterations,
+                              polish ? o.push_weight : 1.);
   }
   std::ofstream out(o.out);
   out << "// Copyright (c) 2026 The Penrose_Delaunay_triangulation_2 authors.\n"

@@ -6,8 +6,8 @@
 //   sampler_benchmark speed [N=1e6] [runs=5]   sampling time / CGAL range insertion time
 //   sampler_benchmark memory [N=1e6]           peak resident bytes per output point
 //   sampler_benchmark scaling                  ns per point at 1e5 and 4e6
-//   sampler_benchmark quality [N=65536] [corrections=1]
-//                                              delta_min, delta_avg, anisotropy at 21 densities
+//   sampler_benchmark quality [N=65536] [corrections=1] [densities=21]
+//                                              delta_min, delta_avg, anisotropy over one level
 
 #include <CGAL/Penrose_importance_sampler.h>
 #include <CGAL/Penrose_Delaunay_triangulation_2/point_set_quality.h>
@@ -98,13 +98,13 @@ static int scaling()
   return 0;
 }
 
-static int quality(double n, bool correct)
+static int quality(double n, bool correct, int densities)
 {
-  // 21 densities spread over one factor phi^2, as the importance index runs
+  // densities spread over one factor phi^2, as the importance index runs
   const double phi2 = 2.6180339887498949;
   double worst = 1e9, mean_avg = 0., mean_aniso = 0.;
-  for(int k = 0; k < 21; ++k) {
-    const double target = n * std::pow(phi2, (k + 0.5) / 21.);
+  for(int k = 0; k < densities; ++k) {
+    const double target = n * std::pow(phi2, (k + 0.5) / densities);
     const std::vector<K::Point_2> p = sample(target, nullptr, correct);
     const Q::Spacing s = Q::spacing(p, Q::Rectangle{0, 0, 1, 1});
     const double w = std::sqrt(4096. / p.size());  // a window of about 4096 points
@@ -115,8 +115,8 @@ static int quality(double n, bool correct)
       if(sp.frequency[i] > 16) { aniso += sp.anisotropy_db[i]; ++m; }
     aniso /= m;
     worst = std::min(worst, s.delta_min);
-    mean_avg += s.delta_avg / 21.;
-    mean_aniso += aniso / 21.;
+    mean_avg += s.delta_avg / densities;
+    mean_aniso += aniso / densities;
     std::cout << "density " << k << ": " << p.size() << " points, delta_min " << s.delta_min
               << ", delta_avg " << s.delta_avg << ", anisotropy " << aniso << " dB\n";
   }
@@ -132,7 +132,8 @@ int main(int argc, char** argv)
   if(mode == "speed") return speed(n > 0 ? n : 1e6, argc > 3 ? std::atoi(argv[3]) : 5);
   if(mode == "memory") return memory(n > 0 ? n : 1e6);
   if(mode == "scaling") return scaling();
-  if(mode == "quality") return quality(n > 0 ? n : 65536, argc > 3 ? std::atoi(argv[3]) != 0 : true);
-  std::cerr << "usage: sampler_benchmark speed|memory|scaling|quality [N] [runs|corrections]\n";
+  if(mode == "quality")
+    return quality(n > 0 ? n : 65536, argc > 3 ? std::atoi(argv[3]) != 0 : true, argc > 4 ? std::atoi(argv[4]) : 21);
+  std::cerr << "usage: sampler_benchmark speed|memory|scaling|quality [N] [runs|corrections] [densities]\n";
   return 2;
 }

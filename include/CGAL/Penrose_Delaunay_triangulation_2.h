@@ -131,33 +131,32 @@ public:
   {
     const internal::Penrose::Sampling_context& context = sampler.context();
     Flat_mesh mesh;
-    std::vector<internal::Penrose::Vertex_sample> vertex_samples;
-    internal::Penrose::Base_triangulation_builder(context, mesh, vertex_samples).build();
+    internal::Penrose::Base_triangulation_builder builder(context, mesh);
+    builder.build();
     stats_ = Construction_statistics();
-    stats_.base_vertices = mesh.x.size();
-
-    // which vertices are samples of the region, and where they go
     const std::size_t n = mesh.x.size();
-    std::vector<internal::Penrose::Placed_sample> placed(n);
     std::vector<char> keep(n, 0);
     for(std::size_t v = 0; v < n; ++v) {
-      const internal::Penrose::Vertex_sample& s = vertex_samples[v];
-      keep[v] = s.is_sample && context.activate(mesh.x[v], mesh.y[v], s.importance, s.birth, placed[v])
-                && context.contains(placed[v].x, placed[v].y);
+      if(mesh.vertex_face[v] == Flat_mesh::null) continue;  // never entered the mesh
+      ++stats_.base_vertices;
+      keep[v] = builder.kept(Index(v));
     }
+    const auto& state = builder.vertices();
     const std::array<Index, 3> frame = add_frame(mesh, context);
 
     internal::Penrose::Flat_mesh_editor editor(mesh);
     std::vector<Index> stuck, unplaced;
     for(std::size_t v = 0; v < n; ++v)
-      if(!keep[v]) {
+      if(!keep[v] && mesh.vertex_face[v] != Flat_mesh::null) {
         if(editor.remove_vertex(Index(v))) ++stats_.removed_vertices;
         else stuck.push_back(Index(v));
       }
     for(std::size_t v = 0; v < n; ++v) {
-      if(!keep[v] || (placed[v].x == mesh.x[v] && placed[v].y == mesh.y[v])) continue;
+      if(!keep[v]) continue;
+      const internal::Penrose::Placed_sample& s = state[v].placed;
+      if(s.x == mesh.x[v] && s.y == mesh.y[v]) continue;
       bool repaired = false;
-      if(!editor.move_vertex(Index(v), placed[v].x, placed[v].y, repaired)) unplaced.push_back(Index(v));
+      if(!editor.move_vertex(Index(v), s.x, s.y, repaired)) unplaced.push_back(Index(v));
       if(repaired) ++stats_.repaired_vertices;
     }
 
@@ -165,10 +164,10 @@ public:
     restore_delaunay();
     for(Index v : stuck) this->remove(handle[v]);
     for(Index w : frame) this->remove(handle[w]);
-    for(Index v : unplaced) handle[v] = this->insert(lift(placed[v].x, placed[v].y));
+    for(Index v : unplaced) handle[v] = this->insert(lift(state[v].placed.x, state[v].placed.y));
     stats_.fallbacks = stuck.size() + unplaced.size();
     for(std::size_t v = 0; v < n; ++v)
-      if(keep[v] && handle[v] != Vertex_handle()) on_vertex(handle[v], sampler.to_sample(placed[v]));
+      if(keep[v] && handle[v] != Vertex_handle()) on_vertex(handle[v], sampler.to_sample(state[v].placed));
   }
 
   template <class SamplerTraits, class Lift>

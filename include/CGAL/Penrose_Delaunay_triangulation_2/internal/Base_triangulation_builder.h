@@ -2,37 +2,35 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The base triangulation of section 3.2 of the paper: the tile tree, made free
-// of T-edges, built breadth first straight into a flat mesh. Each subdivided
-// tile is replaced by its children; a new vertex on an edge whose other side
-// is a leaf splits that leaf's face in two. Two tiles of one level that split
-// a shared edge share its vertex: the first to subdivide leaves the vertex and
-// its children along the edge to the second. Only the current level of tiles
-// is held, so memory follows the mesh, not the tree.
+// of T-edges, built breadth first straight into a flat mesh.
+//
+// A new vertex enters the mesh only if it is kept (an active sample that
+// lands in the region) or a corner of a tile that is subdivided further:
+// the other ones, which section 3.3 would create and remove again, are never
+// created, and the children around them stay merged (Split_patterns). A
+// present vertex on an edge whose other side is a leaf splits that leaf's
+// face in two. Two tiles of one level that split a shared edge share its
+// vertex: the first to reach it leaves it, and later its triangles along the
+// edge, to the second. Only the tiles that are still to be subdivided are
+// held, so memory follows the mesh, not the tree.
 
 #ifndef CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_BASE_TRIANGULATION_BUILDER_H
 #define CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_BASE_TRIANGULATION_BUILDER_H
 
 #include <CGAL/Penrose_Delaunay_triangulation_2/internal/Flat_mesh.h>
 #include <CGAL/Penrose_Delaunay_triangulation_2/internal/Sampling_context.h>
-#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Tile_edge_tables.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Split_patterns.h>
 
 #include <CGAL/assertions.h>
 
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 namespace CGAL {
 namespace internal {
 namespace Penrose {
-
-// What a vertex of the base triangulation knows of its sample.
-struct Vertex_sample
-{
-  double importance;
-  Sample_birth birth;
-  bool is_sample;
-};
 
 class Base_triangulation_builder
 {
@@ -40,43 +38,69 @@ public:
   typedef Flat_mesh::Index Index;
   static constexpr Index null = Flat_mesh::null;
 
-  Base_triangulation_builder(const Sampling_context& context, Flat_mesh& mesh,
-                             std::vector<Vertex_sample>& samples)
-    : c_(context), m_(mesh), s_(samples)
+  // Per vertex, after build(): whether it is a sample of the region, and if
+  // so where its correction takes it.
+  struct Vertex_state
+  {
+    double importance;
+    Sample_birth birth;
+    bool is_sample;
+    bool needed;            // a corner of a tile that is subdivided
+    signed char kept;       // -1: not decided yet
+    Placed_sample placed;   // valid when kept
+  };
+
+  Base_triangulation_builder(const Sampling_context& context, Flat_mesh& mesh)
+    : c_(context), m_(mesh)
   {}
+
+  const std::vector<Vertex_state>& vertices() const { return v_; }
+
+  bool kept(Index v)
+  {
+    Vertex_state& s = v_[v];
+    if(s.kept < 0)
+      s.kept = s.is_sample && c_.activate(m_.x[v], m_.y[v], s.importance, s.birth, s.placed)
+               && c_.contains(s.placed.x, s.placed.y);
+    return s.kept != 0;
+  }
 
   void build()
   {
     for(int i = 0; i < 3; ++i) add_vertex(c_.root_x(i), c_.root_y(i));
-    const Index root = m_.create_face(0, 1, 2);
-    frontier_.push_back(Tile{0, 0, root, FAT_F, 15, false, {}});
+    Tile root;
+    root.code = 0; root.threshold = 0; root.type = FAT_F; root.direction = 15;
+    root.corners = {{0, 1, 2}};
+    root.face = m_.create_face(0, 1, 2);
+    root.refine = refines(root, 0);
+    if(root.refine) frontier_.push_back(root);
     for(int level = 0; !frontier_.empty(); ++level) {
-      index_frontier(level);
+      if(face_tile_.size() < m_.faces.size()) face_tile_.resize(m_.faces.size() * 2, null);
+      for(std::size_t k = 0; k < frontier_.size(); ++k) face_tile_[frontier_[k].face] = Index(k);
       next_.clear();
-      for(std::size_t k = 0; k < frontier_.size(); ++k)
-        if(frontier_[k].refine) subdivide(k, level);
-      for(const Tile& t : frontier_) face_tile_[t.face] = null;
+      children_of_.clear();
+      first_child_ = 0;
+      for(std::size_t k = 0; k < frontier_.size(); ++k) create_vertices(k, level);
+      for(std::size_t k = 0; k < frontier_.size(); ++k) create_triangles(k);
+      for(const Tile& t : frontier_) if(t.face < face_tile_.size()) face_tile_[t.face] = null;
       frontier_.swap(next_);
     }
   }
 
 private:
-  // The split of a shared edge that the tile on the other side made first:
-  // the vertex, and that tile's children along the edge, in this tile's order.
-  struct Pending
-  {
-    Index vertex = null;
-    std::array<Index, 2> faces = {{null, null}};
-  };
-
+  // A tile that is to be subdivided, with what its neighbours across each edge
+  // left for it: the vertex they created there, then their triangles along it.
   struct Tile
   {
     std::uint64_t code, threshold;
+    std::array<Index, 3> corners;
     Index face;
     Tile_type type;
     std::uint8_t direction;
     bool refine;
-    std::array<Pending, 3> pending;  // by tile edge
+    std::array<Index, 2> new_vertices = {{null, null}};
+    std::array<Index, 3> pending_vertex = {{null, null, null}};
+    std::array<std::array<Index, 2>, 3> pending_triangles = {{{{null, null}}, {{null, null}}, {{null, null}}}};
   };
 
   // tile edge e (corner e to corner e + 1) is the face edge opposite corner e + 2
@@ -85,130 +109,167 @@ private:
   Index add_vertex(double x, double y)
   {
     const Index v = m_.add_vertex(x, y);
-    s_.push_back(Vertex_sample{c_.importance(x, y), Sample_birth{0, 0, 0, 0}, false});
+    Vertex_state s;
+    s.importance = c_.importance(x, y);
+    s.birth = Sample_birth{0, 0, 0, 0};
+    s.is_sample = false;
+    s.needed = false;
+    s.kept = -1;
+    v_.push_back(s);
     return v;
   }
 
-  void index_frontier(int level)
+  bool refines(const Tile& t, int level) const
   {
-    if(face_tile_.size() < m_.faces.size()) face_tile_.resize(m_.faces.size() + m_.faces.size() / 2, null);
-    for(std::size_t k = 0; k < frontier_.size(); ++k) {
-      Tile& t = frontier_[k];
-      face_tile_[t.face] = Index(k);
-      double x[3], y[3], importance[3];
-      for(int i = 0; i < 3; ++i) {
-        const Index v = m_.faces[t.face].v[i];
-        x[i] = m_.x[v]; y[i] = m_.y[v]; importance[i] = s_[v].importance;
-      }
-      t.refine = c_.should_refine(level, x, y, importance);
+    double x[3], y[3], importance[3];
+    for(int i = 0; i < 3; ++i) {
+      x[i] = m_.x[t.corners[i]]; y[i] = m_.y[t.corners[i]]; importance[i] = v_[t.corners[i]].importance;
     }
+    return c_.should_refine(level, x, y, importance);
   }
 
-  // The frontier tile whose intact face is g and that will subdivide later in
-  // this pass, or null.
-  Index refining_tile_of(Index g) const
+  // The tile still to be subdivided whose face is g, or null.
+  Index tile_of_face(Index g) const
   {
-    if(g == null || g >= face_tile_.size()) return null;
-    const Index k = face_tile_[g];
-    return (k != null && frontier_[k].refine) ? k : null;
+    return (g == null || g >= face_tile_.size()) ? null : face_tile_[g];
   }
 
-  void subdivide(std::size_t k, int level)
+  // Phase 1: the new vertices, their samples, and the children that will be
+  // subdivided (their corners are needed).
+  void create_vertices(std::size_t k, int level)
   {
-    const Tile t = frontier_[k];
-    face_tile_[t.face] = null;  // its face becomes a child's
+    Tile& t = frontier_[k];
     const Subdivision_rule& r = rule(t.type);
-    const Tile_edge_tables& tables = tile_edge_tables();
-    const Flat_mesh::Face parent = m_.faces[t.face];
+    const Flat_mesh::Face& face = m_.faces[t.face];
     const int child_level = level + 1;
-
-    std::array<Index, 5> v = {{parent.v[0], parent.v[1], parent.v[2], null, null}};
+    std::array<Index, 5> v = {{t.corners[0], t.corners[1], t.corners[2], null, null}};
     for(int n = 0; n < r.number_of_new_vertices; ++n) {
       const New_vertex_rule& nv = r.new_vertices[n];
-      Index& x = v[3 + n];
-      x = t.pending[nv.edge].vertex;
+      Index x = t.pending_vertex[nv.edge];
       if(x == null) {
         const Index a = v[nv.near_corner], b = v[nv.far_corner];
         x = add_vertex(m_.x[a] + split_fraction * (m_.x[b] - m_.x[a]),
                        m_.y[a] + split_fraction * (m_.y[b] - m_.y[a]));
+        // a tile across that is still to come will split the edge here too
+        const Index across = tile_of_face(face.n[face_edge(nv.edge)]);
+        if(across != null && across > k) {
+          const Index g = face.n[face_edge(nv.edge)];
+          const int ge = m_.edge_index(g, t.corners[(nv.edge + 1) % 3], t.corners[nv.edge]);
+          frontier_[across].pending_vertex[(ge + 1) % 3] = x;
+        }
       }
+      v[3 + n] = x;
+      t.new_vertices[n] = x;
       if(nv.is_sample) {
-        s_[x].is_sample = true;
-        s_[x].birth = Sample_birth{ t.code * 4 + r.sample_code_pair,
-                                    t.threshold + pair_weight(r.sample_code_pair, child_level),
-                                    static_cast<std::uint8_t>(child_level),
-                                    add_direction(t.direction, r.sample_direction_step) };
+        Vertex_state& s = v_[x];
+        s.is_sample = true;
+        s.birth = Sample_birth{ t.code * 4 + r.sample_code_pair,
+                                t.threshold + pair_weight(r.sample_code_pair, child_level),
+                                static_cast<std::uint8_t>(child_level),
+                                add_direction(t.direction, r.sample_direction_step) };
       }
     }
-
-    std::array<Index, 3> cf;
     for(int c = 0; c < r.number_of_children; ++c) {
       const Child_rule& cr = r.children[c];
-      const Index a = v[cr.corners[0]], b = v[cr.corners[1]], d = v[cr.corners[2]];
-      if(c == 0) { cf[c] = t.face; m_.reset_face(t.face, a, b, d); }
-      else cf[c] = m_.create_face(a, b, d);
-      next_.push_back(Tile{ t.code * 4 + cr.code_pair, t.threshold + pair_weight(cr.code_pair, child_level),
-                            cf[c], cr.type, add_direction(t.direction, cr.direction_step), false, {} });
+      Tile child;
+      child.code = t.code * 4 + cr.code_pair;
+      child.threshold = t.threshold + pair_weight(cr.code_pair, child_level);
+      child.corners = {{v[cr.corners[0]], v[cr.corners[1]], v[cr.corners[2]]}};
+      child.face = null;
+      child.type = cr.type;
+      child.direction = add_direction(t.direction, cr.direction_step);
+      child.refine = refines(child, child_level);
+      if(!child.refine) continue;
+      for(Index corner : child.corners) v_[corner].needed = true;
+      next_.push_back(child);
+      children_of_.push_back(Index(k));
     }
-    for(int c = 0; c < r.number_of_children; ++c)
-      for(int j = 0; j < 3; ++j) {
-        const Child_edge_place& p = tables.places[t.type][c][j];
-        if(!p.on_parent_edge)
-          m_.faces[cf[c]].n[face_edge(j)] = cf[p.sibling.child];
-      }
-    for(int e = 0; e < 3; ++e) connect_parent_edge(t, parent, e, v, cf);
   }
 
-  // Links the children along parent edge e to what lies across it.
-  void connect_parent_edge(const Tile& t, const Flat_mesh::Face& parent, int e,
-                           const std::array<Index, 5>& v, const std::array<Index, 3>& cf)
+  bool present(Index x) { return v_[x].needed || kept(x); }
+
+  // Phase 2: the triangles of the tile, and their links across its edges.
+  void create_triangles(std::size_t k)
   {
-    const Tile_edge_tables& tables = tile_edge_tables();
-    const int segments = tables.number_of_segments[t.type][e];
+    const Tile t = frontier_[k];
+    const Subdivision_rule& r = rule(t.type);
+    unsigned mask = 0;
+    for(int n = 0; n < r.number_of_new_vertices; ++n)
+      if(present(t.new_vertices[n])) mask |= 1u << n;
+    const Split_pattern& p = split_patterns(t.type, mask);
+    const Flat_mesh::Face parent = m_.faces[t.face];
+    const std::array<Index, 5> v = {{t.corners[0], t.corners[1], t.corners[2], t.new_vertices[0], t.new_vertices[1]}};
+
+    std::array<Index, 3> tri;
+    for(int f = 0; f < p.number_of_triangles; ++f) {
+      const auto& c = p.triangles[f].corners;
+      if(f == 0) { tri[f] = t.face; m_.reset_face(t.face, v[c[0]], v[c[1]], v[c[2]]); }
+      else tri[f] = m_.create_face(v[c[0]], v[c[1]], v[c[2]]);
+    }
+    for(int f = 0; f < p.number_of_triangles; ++f)
+      for(int j = 0; j < 3; ++j)
+        if(p.places[f][j].parent_edge < 0) m_.faces[tri[f]].n[j] = tri[p.places[f][j].triangle];
+    for(int e = 0; e < 3; ++e) connect_parent_edge(t, k, parent, e, p, tri, mask);
+    // the children to subdivide next take their triangles
+    for(int f = 0; f < p.number_of_triangles; ++f) {
+      const int c = p.triangles[f].child;
+      if(c < 0) continue;
+      for(std::size_t q = first_child_; q < next_.size() && children_of_[q] == k; ++q)
+        if(next_[q].corners == std::array<Index, 3>{{v[p.triangles[f].corners[0]], v[p.triangles[f].corners[1]], v[p.triangles[f].corners[2]]}})
+          next_[q].face = tri[f];
+    }
+    for(; first_child_ < next_.size() && children_of_[first_child_] == k; ++first_child_)
+      CGAL_assertion(next_[first_child_].face != null);
+  }
+
+  void connect_parent_edge(const Tile& t, std::size_t k, const Flat_mesh::Face& parent, int e,
+                           const Split_pattern& p, const std::array<Index, 3>& tri, unsigned mask)
+  {
     const Index a = parent.v[e], b = parent.v[(e + 1) % 3];
     const Index g = parent.n[face_edge(e)];
-    Index child[2]; int child_edge[2];
-    for(int s = 0; s < segments; ++s) {
-      child[s] = cf[tables.segments[t.type][e][s].child];
-      child_edge[s] = face_edge(tables.segments[t.type][e][s].edge);
-    }
-    if(segments == 1) {            // unsplit: whatever is across now borders the child
-      if(g == null) return;
-      m_.link(child[0], child_edge[0], g, m_.edge_index(g, b, a));
+    Index seg[2] = {null, null}; int seg_edge[2] = {0, 0};
+    for(int f = 0; f < p.number_of_triangles; ++f)
+      for(int j = 0; j < 3; ++j)
+        if(p.places[f][j].parent_edge == e) { seg[p.places[f][j].segment] = tri[f]; seg_edge[p.places[f][j].segment] = j; }
+    const int n = rule(t.type).number_of_new_vertices;
+    int split = -1;
+    for(int i = 0; i < n; ++i)
+      if(rule(t.type).new_vertices[i].edge == e && (mask >> i & 1u)) split = i;
+    const Index across = tile_of_face(g);
+    if(split < 0) {  // one segment: whatever lies across now borders it
+      if(g != null) m_.link(seg[0], seg_edge[0], g, m_.edge_index(g, b, a));
       return;
     }
-    const Index x = v[3 + tables.new_vertex_on_edge[t.type][e]];
-    const Pending& pending = t.pending[e];
-    if(pending.vertex != null) {   // the tile across split the edge first
-      m_.link(child[0], child_edge[0], pending.faces[0], m_.edge_index(pending.faces[0], x, a));
-      m_.link(child[1], child_edge[1], pending.faces[1], m_.edge_index(pending.faces[1], b, x));
+    const Index x = t.new_vertices[split];
+    if(t.pending_triangles[e][0] != null) {  // the tile across is done: take its triangles
+      const Index f0 = t.pending_triangles[e][0], f1 = t.pending_triangles[e][1];
+      m_.link(seg[0], seg_edge[0], f0, m_.edge_index(f0, x, a));
+      m_.link(seg[1], seg_edge[1], f1, m_.edge_index(f1, b, x));
       return;
     }
-    if(g == null) return;          // the root's boundary
-    const Index across = refining_tile_of(g);
-    if(across != null) {           // it will subdivide later: leave it the split
-      Tile& n = frontier_[across];
+    if(g == null) return;  // the root's boundary
+    if(across != null && across > k) {  // still to come: leave it our triangles
       const int ge = m_.edge_index(g, b, a);
-      const int ne = (ge + 1) % 3;  // its tile edge
-      n.pending[ne].vertex = x;
-      n.pending[ne].faces = {{child[1], child[0]}};
-      m_.faces[child[0]].n[child_edge[0]] = g;
-      m_.faces[child[1]].n[child_edge[1]] = g;
+      frontier_[across].pending_triangles[(ge + 1) % 3] = {{seg[1], seg[0]}};
+      m_.faces[seg[0]].n[seg_edge[0]] = g;
+      m_.faces[seg[1]].n[seg_edge[1]] = g;
       return;
     }
-    // a leaf (or part of one): split its face at x
+    // a leaf, or part of one: split it at x
     const int ge = m_.edge_index(g, b, a);
     CGAL_assertion(ge >= 0);
-    const Index h = m_.split_face_on_edge(g, ge, x);  // g: b-x, h: x-a
-    m_.link(child[0], child_edge[0], h, 0);
-    m_.link(child[1], child_edge[1], g, 0);
+    const Index h = m_.split_face_on_edge(g, ge, x);  // g keeps b-x, h takes x-a
+    m_.link(seg[0], seg_edge[0], h, 0);
+    m_.link(seg[1], seg_edge[1], g, 0);
   }
 
   const Sampling_context& c_;
   Flat_mesh& m_;
-  std::vector<Vertex_sample>& s_;
+  std::vector<Vertex_state> v_;
   std::vector<Tile> frontier_, next_;
-  std::vector<Index> face_tile_;  // frontier tile of an intact face, or null
+  std::vector<Index> children_of_;   // for each entry of next_, its parent in frontier_
+  std::size_t first_child_ = 0;
+  std::vector<Index> face_tile_;     // frontier tile of an intact face, or null
 };
 
 } // namespace Penrose

@@ -33,7 +33,7 @@ public:
   bool remove_vertex(Index v)
   {
     if(!collect_star(v)) return false;
-    if(!plan_ears()) return false;
+    if(!plan_ears(v)) return false;
     for(Index f : star_) m_.delete_face(f);
     apply_ears();
     m_.vertex_face[v] = null;
@@ -92,7 +92,21 @@ private:
   }
 
   // Chooses the ears that triangulate the ring, without touching the mesh.
-  bool plan_ears()
+  // The ring is star-shaped around the removed vertex v, so a convex corner
+  // whose diagonal leaves v on its inner side is an ear; the general test,
+  // against every other ring vertex, is the fallback.
+  bool plan_ears(Index v)
+  {
+    if(plan_ears_with([&](const std::vector<int>&, int p, int q, int r) {
+         return m_.orientation(ring_[p], ring_[q], ring_[r]) == POSITIVE &&
+                m_.orientation(ring_[p], ring_[r], v) != NEGATIVE;
+       }))
+      return true;
+    return plan_ears_with([&](const std::vector<int>& idx, int p, int q, int r) { return is_ear(idx, p, q, r); });
+  }
+
+  template <class Ear_test>
+  bool plan_ears_with(Ear_test is_valid_ear)
   {
     ears_.clear();
     std::vector<int> idx(ring_.size());
@@ -104,7 +118,7 @@ private:
       for(std::size_t s = 0; s < n && !found; ++s) {
         const std::size_t t = (start + s) % n;
         const int p = idx[(t + n - 1) % n], q = idx[t], r = idx[(t + 1) % n];
-        if(!is_ear(idx, p, q, r)) continue;
+        if(!is_valid_ear(idx, p, q, r)) continue;
         ears_.push_back({p, q, r});
         idx.erase(idx.begin() + std::ptrdiff_t(t));
         start = t % idx.size();
