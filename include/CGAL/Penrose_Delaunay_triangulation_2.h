@@ -7,6 +7,7 @@
 #include <CGAL/Penrose_importance_sampler.h>
 #include <CGAL/Penrose_Delaunay_triangulation_2/internal/Base_triangulation_builder.h>
 #include <CGAL/Penrose_Delaunay_triangulation_2/internal/Flat_mesh.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Flat_mesh_delaunay.h>
 #include <CGAL/Penrose_Delaunay_triangulation_2/internal/Flat_mesh_editing.h>
 
 #include <CGAL/Default.h>
@@ -136,12 +137,12 @@ public:
     stats_ = Construction_statistics();
     const std::size_t n = mesh.x.size();
     std::vector<char> keep(n, 0);
+    std::vector<internal::Penrose::Placed_sample> placed(n);
     for(std::size_t v = 0; v < n; ++v) {
       if(mesh.vertex_face[v] == Flat_mesh::null) continue;  // never entered the mesh
       ++stats_.base_vertices;
-      keep[v] = builder.kept(Index(v));
+      keep[v] = builder.kept(Index(v), placed[v]);
     }
-    const auto& state = builder.vertices();
     const std::array<Index, 3> frame = add_frame(mesh, context);
 
     internal::Penrose::Flat_mesh_editor editor(mesh);
@@ -151,23 +152,19 @@ public:
         if(editor.remove_vertex(Index(v))) ++stats_.removed_vertices;
         else stuck.push_back(Index(v));
       }
-    for(std::size_t v = 0; v < n; ++v) {
-      if(!keep[v]) continue;
-      const internal::Penrose::Placed_sample& s = state[v].placed;
-      if(s.x == mesh.x[v] && s.y == mesh.y[v]) continue;
-      bool repaired = false;
-      if(!editor.move_vertex(Index(v), s.x, s.y, repaired)) unplaced.push_back(Index(v));
-      if(repaired) ++stats_.repaired_vertices;
-    }
+    std::vector<std::pair<bool, std::pair<double, double>>> target(n);
+    for(std::size_t v = 0; v < n; ++v)
+      if(keep[v]) target[v] = {placed[v].x != mesh.x[v] || placed[v].y != mesh.y[v], {placed[v].x, placed[v].y}};
+    unplaced = editor.move_vertices(target, stats_.repaired_vertices);
+    stats_.flips = internal::Penrose::make_delaunay(mesh);
 
     std::vector<Vertex_handle> handle = write_tds(mesh, lift);
-    restore_delaunay();
     for(Index v : stuck) this->remove(handle[v]);
     for(Index w : frame) this->remove(handle[w]);
-    for(Index v : unplaced) handle[v] = this->insert(lift(state[v].placed.x, state[v].placed.y));
+    for(Index v : unplaced) handle[v] = this->insert(lift(placed[v].x, placed[v].y));
     stats_.fallbacks = stuck.size() + unplaced.size();
     for(std::size_t v = 0; v < n; ++v)
-      if(keep[v] && handle[v] != Vertex_handle()) on_vertex(handle[v], sampler.to_sample(state[v].placed));
+      if(keep[v] && handle[v] != Vertex_handle()) on_vertex(handle[v], sampler.to_sample(placed[v]));
   }
 
   template <class SamplerTraits, class Lift>
@@ -285,30 +282,6 @@ private:
       if(vh[v] != Vertex_handle()) vh[v]->set_face(fh[m.vertex_face[v]]);
     infinite->set_face(hull.front().second);
     return vh;
-  }
-
-  // Lawson flips until every edge is locally Delaunay.
-  void restore_delaunay()
-  {
-    std::vector<std::pair<Face_handle, int>> stack;
-    for(auto f = this->finite_faces_begin(); f != this->finite_faces_end(); ++f)
-      for(int i = 0; i < 3; ++i)
-        if(&*f < &*f->neighbor(i)) stack.emplace_back(f, i);
-    while(!stack.empty()) {
-      const Face_handle f = stack.back().first;
-      const int i = stack.back().second;
-      stack.pop_back();
-      const Face_handle g = f->neighbor(i);
-      if(this->is_infinite(f) || this->is_infinite(g)) continue;
-      if(this->side_of_oriented_circle(g, f->vertex(i)->point(), true) != ON_POSITIVE_SIDE) continue;
-      this->flip(f, i);
-      ++stats_.flips;
-      // f and g now share the new diagonal; recheck the four edges around them
-      for(int k = 0; k < 3; ++k) {
-        if(f->neighbor(k) != g) stack.emplace_back(f, k);
-        if(g->neighbor(k) != f) stack.emplace_back(g, k);
-      }
-    }
   }
 
   Construction_statistics stats_;

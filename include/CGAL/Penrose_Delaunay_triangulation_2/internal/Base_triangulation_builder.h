@@ -47,7 +47,6 @@ public:
     bool is_sample;
     bool needed;            // a corner of a tile that is subdivided
     signed char kept;       // -1: not decided yet
-    Placed_sample placed;   // valid when kept
   };
 
   Base_triangulation_builder(const Sampling_context& context, Flat_mesh& mesh)
@@ -56,13 +55,15 @@ public:
 
   const std::vector<Vertex_state>& vertices() const { return v_; }
 
-  bool kept(Index v)
+  // Whether v is an active sample whose corrected position is in the region;
+  // `placed` receives the sample when it is.
+  bool kept(Index v, Placed_sample& placed)
   {
     Vertex_state& s = v_[v];
-    if(s.kept < 0)
-      s.kept = s.is_sample && c_.activate(m_.x[v], m_.y[v], s.importance, s.birth, s.placed)
-               && c_.contains(s.placed.x, s.placed.y);
-    return s.kept != 0;
+    if(!s.is_sample || s.kept == 0) return false;
+    const bool k = c_.activate(m_.x[v], m_.y[v], s.importance, s.birth, placed) && c_.contains(placed.x, placed.y);
+    s.kept = k;
+    return k;
   }
 
   void build()
@@ -78,8 +79,6 @@ public:
       if(face_tile_.size() < m_.faces.size()) face_tile_.resize(m_.faces.size() * 2, null);
       for(std::size_t k = 0; k < frontier_.size(); ++k) face_tile_[frontier_[k].face] = Index(k);
       next_.clear();
-      children_of_.clear();
-      first_child_ = 0;
       for(std::size_t k = 0; k < frontier_.size(); ++k) create_vertices(k, level);
       for(std::size_t k = 0; k < frontier_.size(); ++k) create_triangles(k);
       for(const Tile& t : frontier_) if(t.face < face_tile_.size()) face_tile_[t.face] = null;
@@ -99,6 +98,7 @@ private:
     std::uint8_t direction;
     bool refine;
     std::array<Index, 2> new_vertices = {{null, null}};
+    std::array<Index, 3> child_slot = {{null, null, null}};  // in the next frontier
     std::array<Index, 3> pending_vertex = {{null, null, null}};
     std::array<std::array<Index, 2>, 3> pending_triangles = {{{{null, null}}, {{null, null}}, {{null, null}}}};
   };
@@ -181,17 +181,22 @@ private:
       child.refine = refines(child, child_level);
       if(!child.refine) continue;
       for(Index corner : child.corners) v_[corner].needed = true;
+      t.child_slot[c] = Index(next_.size());
       next_.push_back(child);
-      children_of_.push_back(Index(k));
     }
   }
 
-  bool present(Index x) { return v_[x].needed || kept(x); }
+  bool present(Index x)
+  {
+    if(v_[x].needed) return true;
+    if(v_[x].kept < 0) kept(x, scratch_);
+    return v_[x].kept > 0;
+  }
 
   // Phase 2: the triangles of the tile, and their links across its edges.
   void create_triangles(std::size_t k)
   {
-    const Tile t = frontier_[k];
+    const Tile& t = frontier_[k];
     const Subdivision_rule& r = rule(t.type);
     unsigned mask = 0;
     for(int n = 0; n < r.number_of_new_vertices; ++n)
@@ -209,38 +214,31 @@ private:
     for(int f = 0; f < p.number_of_triangles; ++f)
       for(int j = 0; j < 3; ++j)
         if(p.places[f][j].parent_edge < 0) m_.faces[tri[f]].n[j] = tri[p.places[f][j].triangle];
-    for(int e = 0; e < 3; ++e) connect_parent_edge(t, k, parent, e, p, tri, mask);
+    for(int e = 0; e < 3; ++e) connect_parent_edge(t, k, parent, e, p, tri);
     // the children to subdivide next take their triangles
     for(int f = 0; f < p.number_of_triangles; ++f) {
       const int c = p.triangles[f].child;
-      if(c < 0) continue;
-      for(std::size_t q = first_child_; q < next_.size() && children_of_[q] == k; ++q)
-        if(next_[q].corners == std::array<Index, 3>{{v[p.triangles[f].corners[0]], v[p.triangles[f].corners[1]], v[p.triangles[f].corners[2]]}})
-          next_[q].face = tri[f];
+      if(c >= 0 && t.child_slot[c] != null) next_[t.child_slot[c]].face = tri[f];
     }
-    for(; first_child_ < next_.size() && children_of_[first_child_] == k; ++first_child_)
-      CGAL_assertion(next_[first_child_].face != null);
+    for(int c = 0; c < 3; ++c) CGAL_assertion(t.child_slot[c] == null || next_[t.child_slot[c]].face != null);
   }
 
   void connect_parent_edge(const Tile& t, std::size_t k, const Flat_mesh::Face& parent, int e,
-                           const Split_pattern& p, const std::array<Index, 3>& tri, unsigned mask)
+                           const Split_pattern& p, const std::array<Index, 3>& tri)
   {
     const Index a = parent.v[e], b = parent.v[(e + 1) % 3];
     const Index g = parent.n[face_edge(e)];
-    Index seg[2] = {null, null}; int seg_edge[2] = {0, 0};
-    for(int f = 0; f < p.number_of_triangles; ++f)
-      for(int j = 0; j < 3; ++j)
-        if(p.places[f][j].parent_edge == e) { seg[p.places[f][j].segment] = tri[f]; seg_edge[p.places[f][j].segment] = j; }
-    const int n = rule(t.type).number_of_new_vertices;
-    int split = -1;
-    for(int i = 0; i < n; ++i)
-      if(rule(t.type).new_vertices[i].edge == e && (mask >> i & 1u)) split = i;
+    Index seg[2]; int seg_edge[2];
+    for(int s = 0; s < p.number_of_segments[e]; ++s) {
+      seg[s] = tri[p.segments[e][s][0]];
+      seg_edge[s] = p.segments[e][s][1];
+    }
     const Index across = tile_of_face(g);
-    if(split < 0) {  // one segment: whatever lies across now borders it
+    if(p.number_of_segments[e] == 1) {  // one segment: whatever lies across now borders it
       if(g != null) m_.link(seg[0], seg_edge[0], g, m_.edge_index(g, b, a));
       return;
     }
-    const Index x = t.new_vertices[split];
+    const Index x = t.new_vertices[rule(t.type).new_vertices[0].edge == e ? 0 : 1];
     if(t.pending_triangles[e][0] != null) {  // the tile across is done: take its triangles
       const Index f0 = t.pending_triangles[e][0], f1 = t.pending_triangles[e][1];
       m_.link(seg[0], seg_edge[0], f0, m_.edge_index(f0, x, a));
@@ -267,8 +265,7 @@ private:
   Flat_mesh& m_;
   std::vector<Vertex_state> v_;
   std::vector<Tile> frontier_, next_;
-  std::vector<Index> children_of_;   // for each entry of next_, its parent in frontier_
-  std::size_t first_child_ = 0;
+  Placed_sample scratch_;
   std::vector<Index> face_tile_;     // frontier tile of an intact face, or null
 };
 

@@ -58,6 +58,51 @@ public:
     return insert_vertex(v, m_.vertex_face[start]);
   }
 
+  // Moves every vertex v with target[v].first set to it at once. Where a face
+  // would fold, its moved vertices go back, until no face folds; those are
+  // then moved one at a time with move_vertex(). Returns the vertices that
+  // could not be placed (removed from the mesh) and counts the repairs.
+  template <class Targets>
+  std::vector<Index> move_vertices(const Targets& target, std::size_t& repaired)
+  {
+    const std::size_t n = m_.x.size();
+    std::vector<std::pair<double, double>> reference(n);
+    std::vector<char> state(n, 0);  // 1: moved, 2: sent back
+    for(Index v = 0; v < target.size(); ++v)
+      if(target[v].first && m_.vertex_face[v] != null) {
+        reference[v] = {m_.x[v], m_.y[v]};
+        m_.x[v] = target[v].second.first; m_.y[v] = target[v].second.second;
+        state[v] = 1;
+      }
+    std::vector<Index> folded, next;
+    for(Index f = 0; f < m_.faces.size(); ++f)
+      if(m_.face_alive[f] && !positive(f)) folded.push_back(f);
+    while(!folded.empty()) {
+      next.clear();
+      for(Index f : folded) {
+        if(positive(f)) continue;
+        for(int i = 0; i < 3; ++i) {
+          const Index u = m_.faces[f].v[i];
+          if(state[u] != 1) continue;
+          state[u] = 2;
+          m_.x[u] = reference[u].first; m_.y[u] = reference[u].second;
+          faces_around(u, next);
+        }
+      }
+      folded.clear();
+      for(Index f : next) if(!positive(f)) folded.push_back(f);
+    }
+    std::vector<Index> unplaced;
+    repaired = 0;
+    for(Index u = 0; u < n; ++u) {
+      if(state[u] != 2) continue;
+      bool r = false;
+      if(!move_vertex(u, target[u].second.first, target[u].second.second, r)) unplaced.push_back(u);
+      if(r) ++repaired;
+    }
+    return unplaced;
+  }
+
   // Inserts the (detached) vertex v, whose coordinates are set, walking from face f.
   bool insert_vertex(Index v, Index f)
   {
@@ -70,6 +115,22 @@ public:
   }
 
 private:
+  bool positive(Index f) const
+  {
+    const Flat_mesh::Face& F = m_.faces[f];
+    return m_.orientation(F.v[0], F.v[1], F.v[2]) == POSITIVE;
+  }
+
+  void faces_around(Index v, std::vector<Index>& out) const
+  {
+    const Index f0 = m_.vertex_face[v];
+    Index f = f0;
+    do {
+      out.push_back(f);
+      f = m_.faces[f].n[Flat_mesh::ccw(m_.index_of_vertex(f, v))];
+    } while(f != f0 && f != null);
+  }
+
   // Ring of the star of v, counter-clockwise, with the faces across its edges.
   bool collect_star(Index v)
   {

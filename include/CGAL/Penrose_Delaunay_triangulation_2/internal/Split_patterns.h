@@ -37,6 +37,9 @@ struct Split_pattern
   std::uint8_t number_of_triangles;
   std::array<Triangle, 3> triangles;
   std::array<std::array<Edge_place, 3>, 3> places;
+  // along tile edge e: the triangles and their edges, from corner e on
+  std::array<std::uint8_t, 3> number_of_segments;
+  std::array<std::array<std::array<std::uint8_t, 2>, 2>, 3> segments;
 };
 
 class Split_patterns
@@ -67,6 +70,9 @@ private:
   {
     Split_pattern& p = patterns_[t][mask];
     p.number_of_triangles = std::uint8_t(triangles.size());
+    p.number_of_segments = {{1, 1, 1}};
+    for(int k = 0; k < r_count(t); ++k)
+      if(mask >> k & 1u) p.number_of_segments[rule(t).new_vertices[k].edge] = 2;
     std::copy(triangles.begin(), triangles.end(), p.triangles.begin());
     const Subdivision_rule& r = rule(t);
     auto on_edge = [&](int a, int e) {
@@ -83,7 +89,10 @@ private:
             place.parent_edge = std::int8_t(e);
             place.segment = (a == e) ? 0 : 1;
           }
-        if(place.parent_edge >= 0) continue;
+        if(place.parent_edge >= 0) {
+          p.segments[place.parent_edge][place.segment] = {{std::uint8_t(f), std::uint8_t(j)}};
+          continue;
+        }
         for(int g = 0; g < p.number_of_triangles; ++g)
           for(int k = 0; k < 3; ++k)
             if(p.triangles[g].corners[(k + 1) % 3] == b && p.triangles[g].corners[(k + 2) % 3] == a) {
@@ -92,6 +101,8 @@ private:
             }
       }
   }
+
+  static int r_count(Tile_type t) { return rule(t).number_of_new_vertices; }
 
   std::array<std::array<Split_pattern, 4>, 4> patterns_;
 };

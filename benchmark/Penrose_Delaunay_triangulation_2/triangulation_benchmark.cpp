@@ -1,0 +1,151 @@
+// Copyright (c) 2026 The Penrose_Delaunay_triangulation_2 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The bars of Penrose_Delaunay_triangulation_2, each against CGAL in the same
+// process and on the same points:
+//   triangulation_benchmark speed [N=1e6] [constant|ramp] [runs=5]
+//       Penrose_Delaunay_triangulation_2 built from a sampler (it walks the
+//       tile tree itself: sampling and triangulation in one pass), against
+//       CGAL::Delaunay_triangulation_2 range insertion (spatial sort + insert)
+//       and Triangulation_hierarchy_2 fed one point at a time in sampler order
+//   triangulation_benchmark memory penrose|cgal [N=1e6]
+//       peak resident bytes per point of one construction (run each in its own process)
+//   triangulation_benchmark scaling [constant|ramp]
+//       ns per point at 1e5 and 4e6
+
+#include <CGAL/Penrose_Delaunay_triangulation_2.h>
+
+#include <CGAL/Delaunay_triangulation_2.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Triangulation_hierarchy_2.h>
+
+#include <sys/resource.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdlib>
+#include <iostream>
+#include <string>
+#include <vector>
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef K::Point_2 Point;
+typedef CGAL::Penrose_importance_sampler<K> Sampler;
+typedef CGAL::Penrose_Delaunay_triangulation_2<K> Pdt;
+typedef CGAL::Delaunay_triangulation_2<K> Dt;
+typedef CGAL::Triangulation_hierarchy_2<CGAL::Delaunay_triangulation_2<K,
+  CGAL::Triangulation_data_structure_2<CGAL::Triangulation_hierarchy_vertex_base_2<
+    CGAL::Triangulation_vertex_base_2<K>>>>> Hierarchy;
+
+static double now()
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+static double median(std::vector<double> v)
+{
+  std::sort(v.begin(), v.end());
+  return v[v.size() / 2];
+}
+
+static Sampler make_sampler(double n, const std::string& input)
+{
+  const K::Iso_rectangle_2 unit(0, 0, 1, 1);
+  auto np = CGAL::parameters::number_of_output_points(std::size_t(n)).maximum_number(std::size_t(1e9));
+  if(input == "ramp") return Sampler(unit, [](const Point& p) { return p.x(); }, np);
+  return Sampler(unit, [](const Point&) { return 1.; }, np);
+}
+
+static int speed(double n, const std::string& input, int runs)
+{
+  std::vector<double> tp, ts, tc, th;
+  for(int r = 0; r < runs; ++r) {
+    const Sampler sampler = make_sampler(n, input);
+    double t0 = now();
+    std::vector<Point> points;
+    points.reserve(std::size_t(sampler.expected_number_of_points() * 1.05));
+    sampler(std::back_inserter(points));
+    ts.push_back(now() - t0);
+
+    t0 = now();
+    Pdt pdt(sampler);
+    tp.push_back(now() - t0);
+
+    t0 = now();
+    Dt dt;
+    dt.insert(points.begin(), points.end());
+    tc.push_back(now() - t0);
+
+    if(r < 3) {
+      t0 = now();
+      Hierarchy h;
+      for(const Point& p : points) h.insert(p);
+      th.push_back(now() - t0);
+    }
+    std::cout << "run " << r << ": " << points.size() << " points; sampling " << ts.back() << " s, Penrose DT "
+              << tp.back() << " s (" << pdt.number_of_flips() << " flips, " << pdt.number_of_fallbacks()
+              << " fallbacks), CGAL range insertion " << tc.back() << " s";
+    if(r < 3) std::cout << ", hierarchy one by one " << th.back() << " s";
+    std::cout << "\n";
+    if(pdt.number_of_vertices() != dt.number_of_vertices()) { std::cerr << "vertex counts differ\n"; return 1; }
+  }
+  const double c = median(tc);
+  std::cout << input << " " << n << ": medians: sampling " << median(ts) << " s, Penrose DT " << median(tp)
+            << " s, CGAL range insertion " << c << " s, hierarchy " << median(th) << " s\n"
+            << "ratios to CGAL range insertion: Penrose DT " << median(tp) / c << ", sampling "
+            << median(ts) / c << "; hierarchy / Penrose DT " << median(th) / median(tp) << "\n";
+  return 0;
+}
+
+static int memory(const std::string& which, double n)
+{
+  const Sampler sampler = make_sampler(n, "constant");
+  std::size_t count = 0;
+  if(which == "penrose") {
+    Pdt pdt(sampler);
+    count = pdt.number_of_vertices();
+  } else {
+    std::vector<Point> points;
+    sampler(std::back_inserter(points));
+    Dt dt;
+    dt.insert(points.begin(), points.end());
+    count = dt.number_of_vertices();
+  }
+  rusage u;
+  getrusage(RUSAGE_SELF, &u);
+  std::cout << which << ": " << count << " points, peak resident " << u.ru_maxrss * 1024. << " bytes, "
+            << u.ru_maxrss * 1024. / count << " bytes per point\n";
+  return 0;
+}
+
+static int scaling(const std::string& input)
+{
+  const double sizes[2] = {1e5, 4e6};
+  double per[2];
+  for(int i = 0; i < 2; ++i) {
+    std::vector<double> t;
+    std::size_t count = 0;
+    for(int r = 0; r < 5; ++r) {
+      const Sampler sampler = make_sampler(sizes[i], input);
+      const double t0 = now();
+      Pdt pdt(sampler);
+      t.push_back(now() - t0);
+      count = pdt.number_of_vertices();
+    }
+    per[i] = median(t) / count * 1e9;
+    std::cout << count << " points: " << per[i] << " ns per point (median of 5)\n";
+  }
+  std::cout << "ratio 4e6 / 1e5: " << per[1] / per[0] << "\n";
+  return 0;
+}
+
+int main(int argc, char** argv)
+{
+  const std::string mode = argc > 1 ? argv[1] : "speed";
+  if(mode == "speed")
+    return speed(argc > 2 ? std::atof(argv[2]) : 1e6, argc > 3 ? argv[3] : "constant", argc > 4 ? std::atoi(argv[4]) : 5);
+  if(mode == "memory") return memory(argc > 2 ? argv[2] : "penrose", argc > 3 ? std::atof(argv[3]) : 1e6);
+  if(mode == "scaling") return scaling(argc > 2 ? argv[2] : "constant");
+  std::cerr << "usage: triangulation_benchmark speed [N] [constant|ramp] [runs] | memory penrose|cgal [N] | scaling [input]\n";
+  return 2;
+}

@@ -1,0 +1,332 @@
+// Copyright (c) 2026 The Penrose_Delaunay_triangulation_2 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Reads and writes height fields: 16-bit (or 8-bit) grey PNG and PGM through
+// stb_image (Debian's libstb-dev; link with -lstb), and ESRI ASCII grids.
+
+#ifndef CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_IO_HEIGHT_FIELD_IO_H
+#define CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_IO_HEIGHT_FIELD_IO_H
+
+#include <stb/stb_image.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <limits>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace IO {
+
+/*!
+\ingroup PkgPenroseDelaunayTriangulation2IO
+
+A regular grid of heights stretched over a rectangle of the plane. Row 0 is
+the northern row (largest y), as in an image and in an ESRI grid.
+*/
+struct Height_field
+{
+  std::size_t width = 0, height = 0;
+  std::vector<double> values;             ///< `width * height` heights, row after row from the top
+  double x0 = 0., y0 = 0., x1 = 0., y1 = 0.; ///< the rectangle covered by the cells (cell corners)
+
+  double at(std::size_t i, std::size_t j) const { return values[j * width + i]; }
+};
+
+namespace internal {
+
+inline std::runtime_error height_field_error(const std::string& file, const std::string& why)
+{
+  return std::runtime_error(file + ": " + why);
+}
+
+inline std::string lowercase_extension(const std::string& file)
+{
+  const std::size_t dot = file.find_last_of('.');
+  std::string e = dot == std::string::npos ? std::string() : file.substr(dot + 1);
+  std::transform(e.begin(), e.end(), e.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return e;
+}
+
+// The whole file, or an exception that tells why not (missing, unreadable, empty).
+inline std::string read_whole_file(const std::string& file)
+{
+  std::ifstream in(file, std::ios::binary);
+  if(!in) throw height_field_error(file, std::string("cannot open (") + std::strerror(errno) + ")");
+  std::string s((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if(in.bad()) throw height_field_error(file, "read error");
+  if(s.empty()) throw height_field_error(file, "empty file");
+  return s;
+}
+
+inline void check_dimensions(const std::string& file, double w, double h, std::size_t max_cells)
+{
+  if(!(w >= 1. && h >= 1. && w * h <= double(max_cells))) {
+    char buf[96];
+    std::snprintf(buf, sizeof buf, "absurd dimensions %.15g x %.15g", w, h);
+    throw height_field_error(file, buf);
+  }
+}
+
+} // namespace internal
+
+/*!
+Reads an ESRI ASCII grid (`.asc`): the header `ncols`, `nrows`,
+`xllcorner` or `xllcenter`, `yllcorner` or `yllcenter`, `cellsize` and the
+optional `NODATA_value`, then `nrows` rows of `ncols` heights from the north.
+Cells without data take the lowest height of the grid, so that a DEM clipped
+to a coastline or a border still makes a closed surface.
+
+\throws std::runtime_error naming the file and the problem: missing or empty
+file, a header field missing or invalid, absurd dimensions (more than
+`max_cells` cells), a value that is not a number, too few values, or no data.
+*/
+inline Height_field read_ESRI_ASCII_grid(const std::string& file, std::size_t max_cells = std::size_t(1) << 28)
+{
+  const std::string text = internal::read_whole_file(file);
+  const char* p = text.c_str();
+  auto fail = [&](const std::string& why) { return internal::height_field_error(file, why); };
+  double ncols = -1., nrows = -1., xll = NAN, yll = NAN, cell = -1., nodata = NAN;
+  bool x_centre = false, y_centre = false;
+  // header: "keyword value" lines, until the first line that starts with a number
+  for(;;) {
+    while(std::isspace((unsigned char)*p)) ++p;
+    if(!std::isalpha((unsigned char)*p)) break;
+    const char* k = p;
+    while(std::isalpha((unsigned char)*p) || *p == '_') ++p;
+    std::string key(k, p);
+    std::transform(key.begin(), key.end(), key.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    char* end = nullptr;
+    const double v = std::strtod(p, &end);
+    if(end == p) throw fail("header field '" + key + "' has no numeric value");
+    p = end;
+    if(key == "ncols") ncols = v;
+    else if(key == "nrows") nrows = v;
+    else if(key == "xllcorner" || key == "xllcenter") { xll = v; x_centre = key == "xllcenter"; }
+    else if(key == "yllcorner" || key == "yllcenter") { yll = v; y_centre = key == "yllcenter"; }
+    else if(key == "cellsize") cell = v;
+    else if(key == "nodata_value") nodata = v;
+    else throw fail("not an ESRI ASCII grid (unknown header field '" + key + "')");
+  }
+  if(ncols < 0. || nrows < 0.) throw fail("not an ESRI ASCII grid (no ncols / nrows header)");
+  if(std::isnan(xll) || std::isnan(yll)) throw fail("header lacks xllcorner / yllcorner");
+  if(!(cell > 0. && std::isfinite(cell))) throw fail("cellsize must be positive");
+  if(ncols != std::floor(ncols) || nrows != std::floor(nrows)) throw fail("ncols and nrows must be integers");
+  internal::check_dimensions(file, ncols, nrows, max_cells);
+
+  Height_field hf;
+  hf.width = std::size_t(ncols);
+  hf.height = std::size_t(nrows);
+  hf.x0 = x_centre ? xll - 0.5 * cell : xll;
+  hf.y0 = y_centre ? yll - 0.5 * cell : yll;
+  hf.x1 = hf.x0 + cell * ncols;
+  hf.y1 = hf.y0 + cell * nrows;
+  const std::size_t n = hf.width * hf.height;
+  if(text.size() < 2 * n) throw fail("truncated: " + std::to_string(text.size()) + " bytes cannot hold "
+                                     + std::to_string(n) + " values");
+  hf.values.resize(n);
+  double lowest = std::numeric_limits<double>::infinity();
+  for(std::size_t k = 0; k < n; ++k) {
+    char* end = nullptr;
+    const double v = std::strtod(p, &end);
+    if(end == p) {
+      while(std::isspace((unsigned char)*p)) ++p;
+      throw fail(*p ? "value " + std::to_string(k + 1) + " is not a number"
+                    : "truncated: " + std::to_string(k) + " of " + std::to_string(n) + " values");
+    }
+    if(!std::isfinite(v)) throw fail("value " + std::to_string(k + 1) + " is not finite");
+    p = end;
+    hf.values[k] = v;
+    if(v != nodata) lowest = (std::min)(lowest, v);
+  }
+  if(lowest == std::numeric_limits<double>::infinity()) throw fail("every cell is NODATA");
+  for(double& v : hf.values)
+    if(v == nodata) v = lowest;
+  return hf;
+}
+
+/*!
+Reads a grey PNG or PGM image (16 or 8 bits per sample) as heights: the raw
+sample values (0 to 65535, or 0 to 255), one pixel a unit square, the image
+over the rectangle [0, width] x [0, height].
+
+\throws std::runtime_error naming the file and the problem: missing, empty,
+not an image, colour, absurd dimensions (more than `max_cells` pixels),
+truncated or corrupt.
+*/
+inline Height_field read_height_image(const std::string& file, std::size_t max_cells = std::size_t(1) << 28)
+{
+  const std::string bytes = internal::read_whole_file(file);
+  auto fail = [&](const std::string& why) { return internal::height_field_error(file, why); };
+  const stbi_uc* data = reinterpret_cast<const stbi_uc*>(bytes.data());
+  const int size = bytes.size() > std::size_t(std::numeric_limits<int>::max()) ? std::numeric_limits<int>::max()
+                                                                                 : int(bytes.size());
+  int w = 0, h = 0, c = 0;
+  if(!stbi_info_from_memory(data, size, &w, &h, &c)) {
+    const char* reason = stbi_failure_reason();
+    throw fail(std::string("cannot read as an image (") + (reason ? reason : "unknown format") + ")");
+  }
+  internal::check_dimensions(file, w, h, max_cells);
+  if(c > 2) throw fail("has " + std::to_string(c) + " colour channels; a height field is a grey image");
+  std::unique_ptr<stbi_us, void (*)(void*)> pixels(stbi_load_16_from_memory(data, size, &w, &h, &c, 1),
+                                                   stbi_image_free);
+  if(!pixels) throw fail(std::string("truncated or corrupt image (") + stbi_failure_reason() + ")");
+  // stb widens 8-bit samples to 16 bits (v * 257): undo it to keep the file's values
+  const double unit = stbi_is_16_bit_from_memory(data, size) ? 1. : 1. / 257.;
+  Height_field hf;
+  hf.width = std::size_t(w);
+  hf.height = std::size_t(h);
+  hf.x1 = double(w);
+  hf.y1 = double(h);
+  hf.values.resize(hf.width * hf.height);
+  for(std::size_t k = 0; k < hf.values.size(); ++k) hf.values[k] = pixels.get()[k] * unit;
+  return hf;
+}
+
+/// Reads a height field, by the file's extension: `.asc` with
+/// `read_ESRI_ASCII_grid()`, anything else with `read_height_image()`.
+inline Height_field read_height_field(const std::string& file, std::size_t max_cells = std::size_t(1) << 28)
+{
+  return internal::lowercase_extension(file) == "asc" ? read_ESRI_ASCII_grid(file, max_cells)
+                                                      : read_height_image(file, max_cells);
+}
+
+namespace internal {
+
+inline void write_bytes(const std::string& file, const std::string& bytes)
+{
+  std::ofstream out(file, std::ios::binary);
+  out.write(bytes.data(), std::streamsize(bytes.size()));
+  out.close();
+  if(!out) throw height_field_error(file, "cannot write");
+}
+
+// Heights as 16-bit samples, rounded and clamped to [0, 65535], big-endian.
+inline std::string big_endian_samples(const Height_field& hf)
+{
+  std::string s(2 * hf.values.size(), '\0');
+  for(std::size_t k = 0; k < hf.values.size(); ++k) {
+    const double v = std::round((std::min)((std::max)(hf.values[k], 0.), 65535.));
+    s[2 * k] = char(unsigned(v) >> 8);
+    s[2 * k + 1] = char(unsigned(v) & 0xff);
+  }
+  return s;
+}
+
+inline void put_u32(std::string& s, std::uint32_t v)
+{
+  for(int k = 3; k >= 0; --k) s.push_back(char((v >> (8 * k)) & 0xff));
+}
+
+inline std::uint32_t crc32(const std::string& s, std::size_t from)
+{
+  std::uint32_t c = 0xffffffffu;
+  for(std::size_t k = from; k < s.size(); ++k) {
+    c ^= (unsigned char)s[k];
+    for(int b = 0; b < 8; ++b) c = (c >> 1) ^ (0xedb88320u & (0u - (c & 1u)));
+  }
+  return c ^ 0xffffffffu;
+}
+
+inline void put_png_chunk(std::string& png, const char* type, const std::string& data)
+{
+  put_u32(png, std::uint32_t(data.size()));
+  const std::size_t start = png.size();
+  png += type;
+  png += data;
+  put_u32(png, crc32(png, start));
+}
+
+// A zlib stream of stored (uncompressed) deflate blocks: no dependency, and
+// the height fields this package writes are small.
+inline std::string zlib_stored(const std::string& raw)
+{
+  std::string z("\x78\x01", 2);
+  std::uint32_t a = 1, b = 0;
+  for(unsigned char ch : raw) { a = (a + ch) % 65521u; b = (b + a) % 65521u; }
+  std::size_t at = 0;
+  do {
+    const std::size_t len = (std::min)(raw.size() - at, std::size_t(65535));
+    z.push_back(at + len == raw.size() ? 1 : 0);  // BFINAL on the last block, BTYPE 00
+    z.push_back(char(len & 0xff)); z.push_back(char(len >> 8));
+    z.push_back(char(~len & 0xff)); z.push_back(char((~len >> 8) & 0xff));
+    z.append(raw, at, len);
+    at += len;
+  } while(at < raw.size());
+  put_u32(z, (b << 16) | a);
+  return z;
+}
+
+} // namespace internal
+
+/// Writes `hf` as a 16-bit binary PGM (P5), heights rounded and clamped to [0, 65535].
+/// \throws std::runtime_error if the file cannot be written.
+inline void write_PGM_16(const std::string& file, const Height_field& hf)
+{
+  internal::write_bytes(file, "P5\n" + std::to_string(hf.width) + " " + std::to_string(hf.height)
+                              + "\n65535\n" + internal::big_endian_samples(hf));
+}
+
+/// Writes `hf` as a 16-bit grey PNG, heights rounded and clamped to [0, 65535].
+/// \throws std::runtime_error if the file cannot be written.
+inline void write_PNG_16(const std::string& file, const Height_field& hf)
+{
+  const std::string samples = internal::big_endian_samples(hf);
+  std::string raw;  // each row prefixed by its filter type, 0 (none)
+  for(std::size_t j = 0; j < hf.height; ++j) {
+    raw.push_back('\0');
+    raw.append(samples, 2 * j * hf.width, 2 * hf.width);
+  }
+  std::string header;
+  internal::put_u32(header, std::uint32_t(hf.width));
+  internal::put_u32(header, std::uint32_t(hf.height));
+  header += std::string("\x10\x00\x00\x00\x00", 5);  // 16 bits, grey, deflate, no filter, no interlace
+  std::string png("\x89PNG\r\n\x1a\n", 8);
+  internal::put_png_chunk(png, "IHDR", header);
+  internal::put_png_chunk(png, "IDAT", internal::zlib_stored(raw));
+  internal::put_png_chunk(png, "IEND", std::string());
+  internal::write_bytes(file, png);
+}
+
+/// Writes `hf` as an ESRI ASCII grid, heights in full precision.
+/// \throws std::runtime_error if the file cannot be written.
+inline void write_ESRI_ASCII_grid(const std::string& file, const Height_field& hf)
+{
+  std::string s = "ncols " + std::to_string(hf.width) + "\nnrows " + std::to_string(hf.height) + "\n";
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "xllcorner %.17g\n", hf.x0); s += buf;
+  std::snprintf(buf, sizeof buf, "yllcorner %.17g\n", hf.y0); s += buf;
+  std::snprintf(buf, sizeof buf, "cellsize %.17g\n", (hf.x1 - hf.x0) / double(hf.width)); s += buf;
+  for(std::size_t j = 0; j < hf.height; ++j)
+    for(std::size_t i = 0; i < hf.width; ++i) {
+      std::snprintf(buf, sizeof buf, i + 1 < hf.width ? "%.17g " : "%.17g\n", hf.at(i, j));
+      s += buf;
+    }
+  internal::write_bytes(file, s);
+}
+
+/// Writes `hf` by the file's extension: `.asc`, `.png` or `.pgm`.
+/// \throws std::runtime_error on another extension or if the file cannot be written.
+inline void write_height_field(const std::string& file, const Height_field& hf)
+{
+  const std::string e = internal::lowercase_extension(file);
+  if(e == "asc") write_ESRI_ASCII_grid(file, hf);
+  else if(e == "png") write_PNG_16(file, hf);
+  else if(e == "pgm") write_PGM_16(file, hf);
+  else throw internal::height_field_error(file, "unknown height field format '." + e + "' (asc, png or pgm)");
+}
+
+} // namespace IO
+} // namespace CGAL
+
+#endif // CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_IO_HEIGHT_FIELD_IO_H

@@ -1,0 +1,80 @@
+// Copyright (c) 2026 The Penrose_Delaunay_triangulation_2 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Reads an image as RGB colours: PNG, JPG, PGM/PPM (8 and 16 bit) and
+// Radiance .hdr through stb_image (Debian's libstb-dev; link with -lstb).
+
+#ifndef CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_IO_READ_RGB_IMAGE_H
+#define CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_IO_READ_RGB_IMAGE_H
+
+#include <CGAL/Penrose_Delaunay_triangulation_2/IO/height_field_io.h>
+
+#include <stb/stb_image.h>
+
+#include <cstddef>
+#include <limits>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace IO {
+
+/*!
+\ingroup PkgPenroseDelaunayTriangulation2IO
+
+A colour image, row 0 at the top, three values (red, green, blue) a pixel.
+*/
+struct Rgb_image
+{
+  std::size_t width = 0, height = 0;
+  std::vector<float> values;        ///< `3 * width * height` values, row after row from the top
+  bool high_dynamic_range = false;  ///< read from a Radiance .hdr file (linear radiance)
+
+  const float* pixel(std::size_t i, std::size_t j) const { return &values[3 * (j * width + i)]; }
+};
+
+/*!
+Reads `file` as colours: in [0, 1] for 8- and 16-bit images (grey images give
+three equal channels), in linear radiance for .hdr files.
+
+\throws std::runtime_error naming the file and the problem: missing, empty,
+not an image, absurd dimensions (more than `max_pixels`), truncated or corrupt.
+*/
+inline Rgb_image read_rgb_image(const std::string& file, std::size_t max_pixels = std::size_t(1) << 28)
+{
+  const std::string bytes = internal::read_whole_file(file);
+  auto fail = [&](const std::string& why) { return internal::height_field_error(file, why); };
+  const stbi_uc* data = reinterpret_cast<const stbi_uc*>(bytes.data());
+  const int size = bytes.size() > std::size_t(std::numeric_limits<int>::max()) ? std::numeric_limits<int>::max()
+                                                                                 : int(bytes.size());
+  int w = 0, h = 0, c = 0;
+  if(!stbi_info_from_memory(data, size, &w, &h, &c)) {
+    const char* reason = stbi_failure_reason();
+    throw fail(std::string("cannot read as an image (") + (reason ? reason : "unknown format") + ")");
+  }
+  internal::check_dimensions(file, w, h, max_pixels);
+  Rgb_image img;
+  img.width = std::size_t(w);
+  img.height = std::size_t(h);
+  img.values.resize(3 * img.width * img.height);
+  auto convert = [&](auto* pixels, float unit) {
+    if(!pixels) throw fail(std::string("truncated or corrupt image (") + stbi_failure_reason() + ")");
+    std::unique_ptr<void, void (*)(void*)> owner(pixels, stbi_image_free);
+    for(std::size_t k = 0; k < img.values.size(); ++k) img.values[k] = float(pixels[k]) * unit;
+  };
+  if(stbi_is_hdr_from_memory(data, size)) {
+    img.high_dynamic_range = true;
+    convert(stbi_loadf_from_memory(data, size, &w, &h, &c, 3), 1.f);
+  } else if(stbi_is_16_bit_from_memory(data, size))
+    convert(stbi_load_16_from_memory(data, size, &w, &h, &c, 3), 1.f / 65535.f);
+  else
+    convert(stbi_load_from_memory(data, size, &w, &h, &c, 3), 1.f / 255.f);
+  return img;
+}
+
+} // namespace IO
+} // namespace CGAL
+
+#endif // CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_IO_READ_RGB_IMAGE_H

@@ -1,0 +1,91 @@
+// Copyright (c) 2026 The Penrose_Delaunay_triangulation_2 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Lawson flips on a Flat_mesh until every edge is locally Delaunay, with the
+// exact predicates of Epick on the double coordinates and the symbolic
+// perturbation of Triangulation_2::side_of_oriented_circle(..., true): the
+// flips end in exactly the triangulation that Delaunay_triangulation_2
+// builds from the same points, cocircular points included.
+
+#ifndef CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_FLAT_MESH_DELAUNAY_H
+#define CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_FLAT_MESH_DELAUNAY_H
+
+#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Flat_mesh.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+#include <algorithm>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace internal {
+namespace Penrose {
+
+// Triangulation_2::side_of_oriented_circle(p0, p1, p2, p, true), restated.
+inline Oriented_side perturbed_side_of_oriented_circle(const Epick::Point_2& p0, const Epick::Point_2& p1,
+                                                       const Epick::Point_2& p2, const Epick::Point_2& p)
+{
+  const Oriented_side os = Epick::Side_of_oriented_circle_2()(p0, p1, p2, p);
+  if(os != ON_ORIENTED_BOUNDARY) return os;
+  const Epick::Point_2* points[4] = {&p0, &p1, &p2, &p};
+  std::sort(points, points + 4, [](const Epick::Point_2* a, const Epick::Point_2* b) {
+    return Epick::Compare_xy_2()(*a, *b) == SMALLER;
+  });
+  const Epick::Orientation_2 orientation;
+  for(int i = 3; i > 0; --i) {
+    if(points[i] == &p) return ON_NEGATIVE_SIDE;
+    Orientation o;
+    if(points[i] == &p2 && (o = orientation(p0, p1, p)) != COLLINEAR) return Oriented_side(o);
+    if(points[i] == &p1 && (o = orientation(p0, p, p2)) != COLLINEAR) return Oriented_side(o);
+    if(points[i] == &p0 && (o = orientation(p, p1, p2)) != COLLINEAR) return Oriented_side(o);
+  }
+  return ON_NEGATIVE_SIDE;
+}
+
+// Flips until Delaunay; returns the number of flips.
+inline std::size_t make_delaunay(Flat_mesh& m)
+{
+  typedef Flat_mesh::Index Index;
+  auto point = [&m](Index v) { return Epick::Point_2(m.x[v], m.y[v]); };
+  std::vector<std::pair<Index, int>> stack;
+  stack.reserve(m.faces.size() * 3 / 2);
+  for(Index f = 0; f < m.faces.size(); ++f)
+    if(m.face_alive[f])
+      for(int i = 0; i < 3; ++i)
+        if(m.faces[f].n[i] != Flat_mesh::null && f < m.faces[f].n[i]) stack.emplace_back(f, i);
+  std::size_t flips = 0;
+  while(!stack.empty()) {
+    const Index f = stack.back().first;
+    const int i = stack.back().second;
+    stack.pop_back();
+    const Index g = m.faces[f].n[i];
+    if(g == Flat_mesh::null) continue;
+    const Flat_mesh::Face& G = m.faces[g];
+    const Index a = m.faces[f].v[i];
+    if(perturbed_side_of_oriented_circle(point(G.v[0]), point(G.v[1]), point(G.v[2]), point(a)) != ON_POSITIVE_SIDE)
+      continue;
+    // f = (a, b, c), g = (d, c, b) become f = (a, b, d), g = (a, d, c)
+    const int j = m.index_of_neighbor(g, f);
+    const Index b = m.faces[f].v[Flat_mesh::ccw(i)], c = m.faces[f].v[Flat_mesh::cw(i)], d = G.v[j];
+    const Index nf_b = m.faces[f].n[Flat_mesh::ccw(i)], nf_c = m.faces[f].n[Flat_mesh::cw(i)];
+    const Index ng_c = G.n[Flat_mesh::ccw(j)], ng_b = G.n[Flat_mesh::cw(j)];
+    m.faces[f].v = {{a, b, d}};
+    m.faces[f].n = {{ng_c, g, nf_c}};
+    m.faces[g].v = {{a, d, c}};
+    m.faces[g].n = {{ng_b, nf_b, f}};
+    if(ng_c != Flat_mesh::null) m.faces[ng_c].n[m.index_of_neighbor(ng_c, g)] = f;
+    if(nf_b != Flat_mesh::null) m.faces[nf_b].n[m.index_of_neighbor(nf_b, f)] = g;
+    m.vertex_face[a] = f; m.vertex_face[b] = f; m.vertex_face[d] = f; m.vertex_face[c] = g;
+    ++flips;
+    stack.emplace_back(f, 0); stack.emplace_back(f, 2);
+    stack.emplace_back(g, 0); stack.emplace_back(g, 1);
+  }
+  return flips;
+}
+
+} // namespace Penrose
+} // namespace internal
+} // namespace CGAL
+
+#endif // CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_FLAT_MESH_DELAUNAY_H
