@@ -2,24 +2,41 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // penrose_mesh: samples a density over a rectangle with the Penrose
-// importance sampler and writes the points, an SVG drawing and statistics.
+// importance sampler, triangulates the samples with
+// Penrose_Delaunay_triangulation_2 and writes the points, the mesh, drawings
+// and statistics. The density comes from a formula, an image or the
+// curvature of a height field; meshes of images and terrains are compared
+// with the regular grid of as many vertices.
 
+#include <CGAL/Penrose_Delaunay_triangulation_2.h>
 #include <CGAL/Penrose_importance_sampler.h>
 #include <CGAL/Raster_density_2.h>
-#include <CGAL/Penrose_Delaunay_triangulation_2/IO/read_luminance_image.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/IO/height_field_io.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/IO/read_rgb_image.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/IO/write_triangulation.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Projection_traits_xy_3.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
+#include <stb/stb_image_write.h>
+
+#include "mesh_raster.h"
+#include "progress_bar.h"
+#include "raster_maps.h"
 #include "svg_writer.h"
 
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <functional>
 #include <iostream>
+#include <limits>
 #include <memory>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 namespace {
@@ -27,33 +44,86 @@ namespace {
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef K::Point_2 Point;
 typedef CGAL::Penrose_importance_sampler<K> Sampler;
+// Every mesh is a terrain: the triangulation is of the points' x and y, and
+// z is the height (zero without a height field).
+typedef CGAL::Projection_traits_xy_3<K> Gt;
+typedef CGAL::Triangulation_vertex_base_with_info_2<std::size_t, Gt> Vb;  // index of the point
+typedef CGAL::Triangulation_data_structure_2<Vb, CGAL::Triangulation_face_base_2<Gt>> Tds;
+typedef CGAL::Penrose_Delaunay_triangulation_2<Gt, Tds> Triangulation;
+typedef Triangulation::Vertex_handle Vertex_handle;
+using penrose_tools::Raster;
 
 const char* usage_text =
-  "usage: penrose_mesh --density constant|ramp|radial|image:FILE\n"
-  "                    [--points N | --scale S] [--region X0 Y0 X1 Y1] [--no-correction]\n"
-  "                    [--out-points FILE] [--svg FILE] [--stats-json FILE]\n"
+  "usage: penrose_mesh (--density constant|ramp|radial|image:FILE | --terrain FILE)\n"
+  "                    [--points N | --scale S] [--region X0 Y0 X1 Y1] [--no-correction] [--boundary]\n"
+  "                    [--gamma G] [--log] [--invert] [--gradient] [--height-scale S] [--viewer X Y]\n"
+  "                    [--out-points FILE] [--out-mesh FILE] [--svg FILE] [--png FILE]\n"
+  "                    [--reconstruct FILE] [--stats-json FILE]\n"
   "\n"
-  "  --density     constant: uniform; ramp: proportional to (x - X0) / (X1 - X0);\n"
-  "                radial: exp(-r^2 / (2 s^2)) around the centre, s = 0.2 width, plus 5% of the peak;\n"
-  "                image:FILE: luminance of a PNG, JPG, PGM/PPM or Radiance .hdr image over the region\n"
+  "density:\n"
+  "  --density constant|ramp|radial\n"
+  "                uniform; proportional to (x - X0) / (X1 - X0); or\n"
+  "                exp(-r^2 / (2 s^2)) around the centre, s = 0.2 width, plus 5% of the peak\n"
+  "  --density image:FILE\n"
+  "                the luminance of a PNG, JPG, PGM/PPM (8 or 16 bit) or Radiance .hdr image\n"
+  "  --terrain FILE\n"
+  "                a height field: a 16-bit grey PNG or PGM, or an ESRI ASCII grid (.asc);\n"
+  "                density from its curvature (largest absolute Hessian eigenvalue, smoothed,\n"
+  "                to the power 2/3); the mesh is 3D, with the heights\n"
+  "  --gamma G     raise the density to the power G (after the options below)\n"
+  "  --log         image: use log(1 + L / mean L) instead of L (for HDR images)\n"
+  "  --invert      image: dense where the image is dark\n"
+  "  --gradient    image: use the smoothed gradient magnitude (edges), plus a tenth of its mean\n"
+  "  --height-scale S   terrain: multiply the heights by S (default 1)\n"
+  "  --viewer X Y  terrain: divide the density by 1 + d / d0, d the distance to (X, Y),\n"
+  "                d0 a fiftieth of the diagonal (view-dependent mesh)\n"
+  "\n"
+  "sampling:\n"
   "  --points N    scale the density so that about N points come out (default 10000)\n"
   "  --scale S     multiply the density (in points per unit area) by S instead\n"
-  "  --region      the rectangle sampled (default 0 0 1 1)\n"
+  "  --region      the rectangle sampled (default 0 0 1 1; an image or a height field is\n"
+  "                stretched over it, and by default covers 0 0 WIDTH HEIGHT, or the\n"
+  "                extent in the header of an .asc grid)\n"
   "  --no-correction  keep the raw tile vertices (no correction vectors)\n"
-  "  --out-points  one \"x y\" line per point, full precision\n"
-  "  --svg         draw the points (over the image, if any)\n"
-  "  --stats-json  write {\"points\": ..., \"sample_seconds\": ..., ...}\n"
+  "  --boundary    add points along the border of the region at the local density, so\n"
+  "                that the mesh covers the whole rectangle\n"
   "\n"
-  "example: penrose_mesh --density ramp --points 20000 --svg ramp.svg\n";
+  "output:\n"
+  "  --out-points  one \"x y\" line per point (\"x y z\" for a terrain), full precision\n"
+  "  --out-mesh    the triangulation as .off, .ply or .obj (by extension), the vertices\n"
+  "                in the order of --out-points, triangles counter-clockwise\n"
+  "  --svg         draw the triangulation and the points (over the image, if any)\n"
+  "  --png         draw the triangulation over the image or the height field\n"
+  "  --reconstruct image: render the mesh back to a PNG, colours interpolated linearly\n"
+  "                over each triangle from the image at its vertices\n"
+  "  --stats-json  write {\"points\": ..., \"sample_seconds\": ..., \"triangulate_seconds\": ...,\n"
+  "                \"vertices\": ..., \"faces\": ..., \"flips\": ..., \"fallbacks\": ..., ...}; for a\n"
+  "                terrain also the vertical \"max_error\" and \"rms_error\" of the mesh and\n"
+  "                \"grid_max_error\", \"grid_rms_error\" of the regular grid of as many\n"
+  "                vertices; for an image \"psnr\" and \"grid_psnr\" likewise\n"
+  "\n"
+  "A progress bar is drawn on stderr, when it is a terminal, for runs over a second.\n"
+  "\n"
+  "examples:\n"
+  "  penrose_mesh --density ramp --points 20000 --svg ramp.svg --out-mesh ramp.off\n"
+  "  penrose_mesh --density image:photo.jpg --gradient --points 20000 --boundary \\\n"
+  "               --reconstruct photo_mesh.png --png photo_edges.png --stats-json photo.json\n"
+  "  penrose_mesh --density image:memorial.hdr --log --points 50000 --svg memorial.svg\n"
+  "  penrose_mesh --terrain dem.asc --points 100000 --boundary --viewer 0 0 \\\n"
+  "               --out-mesh dem.ply --png dem.png --stats-json dem.json\n";
 
 struct Options
 {
-  std::string density = "constant";
+  std::string density = "constant", terrain;
   double points = 10000.;
   double scale = 0.;
   double region[4] = {0, 0, 1, 1};
-  bool correction = true;
-  std::string out_points, svg, stats_json;
+  bool region_given = false, correction = true, boundary = false;
+  double gamma = 1., height_scale = 1.;
+  bool log = false, invert = false, gradient = false;
+  bool viewer_given = false;
+  double viewer[2] = {0, 0};
+  std::string out_points, out_mesh, svg, png, reconstruct, stats_json;
 };
 
 [[noreturn]] void usage_error(const std::string& why)
@@ -73,43 +143,138 @@ double number(const char* s, const std::string& option)
 Options parse(int argc, char** argv)
 {
   Options o;
-  bool have_points = false, have_scale = false;
+  bool have_points = false, have_scale = false, have_density = false;
   for(int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     auto value = [&](int k = 1) -> const char* {
       if(i + k >= argc) usage_error(a + " needs a value");
       return argv[i + k];
     };
+    auto text = [&](std::string& s) { s = value(); ++i; };
     if(a == "--help" || a == "-h") { std::cout << usage_text; std::exit(0); }
-    else if(a == "--density") { o.density = value(); ++i; }
+    else if(a == "--density") { text(o.density); have_density = true; }
+    else if(a == "--terrain") text(o.terrain);
     else if(a == "--points") { o.points = number(value(), a); have_points = true; ++i; }
     else if(a == "--scale") { o.scale = number(value(), a); have_scale = true; ++i; }
-    else if(a == "--region") { for(int k = 0; k < 4; ++k) o.region[k] = number(value(k + 1), a); i += 4; }
+    else if(a == "--region") { for(int k = 0; k < 4; ++k) o.region[k] = number(value(k + 1), a); i += 4; o.region_given = true; }
     else if(a == "--no-correction") o.correction = false;
-    else if(a == "--out-points") { o.out_points = value(); ++i; }
-    else if(a == "--svg") { o.svg = value(); ++i; }
-    else if(a == "--stats-json") { o.stats_json = value(); ++i; }
+    else if(a == "--boundary") o.boundary = true;
+    else if(a == "--gamma") { o.gamma = number(value(), a); ++i; }
+    else if(a == "--log") o.log = true;
+    else if(a == "--invert") o.invert = true;
+    else if(a == "--gradient") o.gradient = true;
+    else if(a == "--height-scale") { o.height_scale = number(value(), a); ++i; }
+    else if(a == "--viewer") { for(int k = 0; k < 2; ++k) o.viewer[k] = number(value(k + 1), a); i += 2; o.viewer_given = true; }
+    else if(a == "--out-points") text(o.out_points);
+    else if(a == "--out-mesh") text(o.out_mesh);
+    else if(a == "--svg") text(o.svg);
+    else if(a == "--png") text(o.png);
+    else if(a == "--reconstruct") text(o.reconstruct);
+    else if(a == "--stats-json") text(o.stats_json);
     else usage_error("unknown option '" + a + "'");
   }
+  const bool image = o.density.rfind("image:", 0) == 0, terrain = !o.terrain.empty();
   if(have_points && have_scale) usage_error("give --points or --scale, not both");
   if(have_scale) o.points = 0.;
   if(have_points && !(o.points >= 1.)) usage_error("--points must be at least 1");
   if(have_scale && !(o.scale > 0.)) usage_error("--scale must be positive");
+  if(have_density && terrain) usage_error("give --density or --terrain, not both");
+  if(!(o.gamma > 0.)) usage_error("--gamma must be positive");
+  if((o.log || o.invert || o.gradient) && !image) usage_error("--log, --invert and --gradient apply to images");
+  if(!o.reconstruct.empty() && !image) usage_error("--reconstruct needs an image (--density image:FILE)");
+  if((o.viewer_given || o.height_scale != 1.) && !terrain) usage_error("--viewer and --height-scale apply to --terrain");
   return o;
+}
+
+double seconds_since(std::chrono::steady_clock::time_point t0)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// What the run reads: an image (its colours for display and reconstruction),
+// or a height field; and the density as a raster when it comes from either.
+struct Input
+{
+  std::string file;
+  bool high_dynamic_range = false;
+  Raster<float> colours;    // 3 channels, display values in [0, 1]; empty unless an image
+  Raster<double> heights;   // scaled; empty unless a terrain
+  Raster<double> density;   // empty for the built-in densities
+};
+
+// The image as display values: linear radiance is clamped to [0, 1] and
+// gamma-encoded, which is also what --reconstruct writes and PSNR compares.
+Input read_image(const Options& o)
+{
+  Input in;
+  in.file = o.density.substr(6);
+  CGAL::IO::Rgb_image img = CGAL::IO::read_rgb_image(in.file);
+  in.high_dynamic_range = img.high_dynamic_range;
+  in.density.width = in.colours.width = img.width;
+  in.density.height = in.colours.height = img.height;
+  in.colours.channels = 3;
+  in.density.values.resize(img.width * img.height);
+  for(std::size_t k = 0; k < in.density.values.size(); ++k) {
+    const float* p = &img.values[3 * k];
+    in.density.values[k] = std::max(0., 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2]);
+  }
+  if(img.high_dynamic_range)
+    for(float& v : img.values) v = std::pow(std::min(std::max(v, 0.f), 1.f), 1.f / 2.2f);
+  in.colours.values = std::move(img.values);
+  std::vector<double>& d = in.density.values;
+  if(o.log) penrose_tools::log_transform(d);
+  if(o.gradient) penrose_tools::gradient_magnitude(d, img.width, img.height);
+  if(o.invert) penrose_tools::invert(d);
+  penrose_tools::apply_gamma(d, o.gamma);
+  return in;
+}
+
+// The smoothing of the curvature follows the spacing of the vertices asked
+// for: the density should not vary faster than the mesh can follow.
+Input read_terrain(const Options& o)
+{
+  Input in;
+  in.file = o.terrain;
+  CGAL::IO::Height_field hf = CGAL::IO::read_height_field(in.file);
+  Raster<double>& h = in.heights;
+  h.width = hf.width;
+  h.height = hf.height;
+  h.values = std::move(hf.values);
+  for(double& v : h.values) v *= o.height_scale;
+  h.x0 = hf.x0; h.y0 = hf.y0; h.x1 = hf.x1; h.y1 = hf.y1;
+  const double spacing = o.points > 0. ? std::sqrt(double(h.width * h.height) / o.points) : 4.;
+  const int radius = int(std::min(16., std::max(1., std::round(0.5 * spacing))));
+  in.density = h;
+  in.density.values = penrose_tools::curvature_density(h.values, h.width, h.height, (h.x1 - h.x0) / double(h.width),
+                                                       (h.y1 - h.y0) / double(h.height), radius);
+  penrose_tools::apply_gamma(in.density.values, o.gamma);
+  return in;
+}
+
+// Puts the rasters over the region; the viewer is in region coordinates.
+void place(Input& in, const Options& o, double x0, double y0, double x1, double y1)
+{
+  for(auto* r : {&in.heights, &in.density}) { r->x0 = x0; r->y0 = y0; r->x1 = x1; r->y1 = y1; }
+  in.colours.x0 = x0; in.colours.y0 = y0; in.colours.x1 = x1; in.colours.y1 = y1;
+  if(o.viewer_given) penrose_tools::weight_by_viewer(in.density, o.viewer[0], o.viewer[1]);
 }
 
 struct Density
 {
   std::function<double(const Point&)> value;
   std::function<double(const K::Iso_rectangle_2&)> upper_bound;  // empty: probes
-  std::string image_file;
 };
 
-Density make_density(const Options& o, const K::Iso_rectangle_2& region)
+Density make_density(const Options& o, const Input& in, const K::Iso_rectangle_2& region)
 {
   const double x0 = o.region[0], y0 = o.region[1], x1 = o.region[2], y1 = o.region[3];
   Density d;
-  if(o.density == "constant") d.value = [](const Point&) { return 1.; };
+  if(!in.density.values.empty()) {
+    auto raster = std::make_shared<CGAL::Raster_density_2<K>>(in.density.width, in.density.height,
+                                                              in.density.values, region);
+    d.value = [raster](const Point& p) { return (*raster)(p); };
+    d.upper_bound = [raster](const K::Iso_rectangle_2& b) { return raster->upper_bound(b); };
+  } else if(o.density == "constant") d.value = [](const Point&) { return 1.; };
   else if(o.density == "ramp") d.value = [=](const Point& p) { return (p.x() - x0) / (x1 - x0); };
   else if(o.density == "radial") {
     const double cx = 0.5 * (x0 + x1), cy = 0.5 * (y0 + y1), s = 0.2 * (x1 - x0);
@@ -117,12 +282,6 @@ Density make_density(const Options& o, const K::Iso_rectangle_2& region)
       const double r2 = (p.x() - cx) * (p.x() - cx) + (p.y() - cy) * (p.y() - cy);
       return std::exp(-r2 / (2 * s * s)) + 0.05;
     };
-  } else if(o.density.rfind("image:", 0) == 0) {
-    d.image_file = o.density.substr(6);
-    CGAL::IO::Luminance_image img = CGAL::IO::read_luminance_image(d.image_file);
-    auto raster = std::make_shared<CGAL::Raster_density_2<K>>(img.width, img.height, std::move(img.values), region);
-    d.value = [raster](const Point& p) { return (*raster)(p); };
-    d.upper_bound = [raster](const K::Iso_rectangle_2& b) { return raster->upper_bound(b); };
   } else usage_error("unknown density '" + o.density + "'");
   return d;
 }
@@ -142,23 +301,319 @@ std::unique_ptr<Sampler> make_sampler(const Options& o, const K::Iso_rectangle_2
   return std::make_unique<Sampler>(region, d.value, use_correction_vectors(o.correction).density_control_factor(o.scale));
 }
 
-void write_points(const std::string& file, const std::vector<Point>& p)
+struct Point_hash
+{
+  std::size_t operator()(const std::pair<double, double>& p) const
+  {
+    return std::hash<double>()(p.first) * 0x9e3779b97f4a7c15ull ^ std::hash<double>()(p.second);
+  }
+};
+
+// The triangulation of the sampler's points, each vertex's info its index in
+// `points`; `vertex[k]` is the vertex at points[k] (the first of duplicates).
+struct Mesh
+{
+  Triangulation t;
+  std::vector<Point> points;
+  std::vector<Vertex_handle> vertex;
+};
+
+template <class Lift>
+void triangulate(Mesh& m, const Sampler& sampler, const Lift& lift)
+{
+  std::unordered_map<std::pair<double, double>, Vertex_handle, Point_hash> at;
+  at.reserve(m.points.size());
+  m.t.build(sampler, lift, [&](Vertex_handle v, const Sampler::Sample& s) {
+    v->info() = std::numeric_limits<std::size_t>::max();
+    at.emplace(std::make_pair(s.point.x(), s.point.y()), v);
+  });
+  m.vertex.resize(m.points.size());
+  for(std::size_t k = 0; k < m.points.size(); ++k) {
+    const auto it = at.find(std::make_pair(m.points[k].x(), m.points[k].y()));
+    if(it == at.end()) throw std::logic_error("a sample is missing from the triangulation");
+    m.vertex[k] = it->second;
+    if(it->second->info() == std::numeric_limits<std::size_t>::max()) it->second->info() = k;
+  }
+}
+
+// Points along the border, counter-clockwise from the lower left corner,
+// spaced by the mean distance of blue-noise samples at the local density,
+// 1.07 / sqrt(density) (that of a hexagonal packing); inserted with insert().
+template <class Lift>
+std::size_t add_boundary(Mesh& m, const Options& o, const Density& d, double scale, const Lift& lift)
+{
+  const double c[5][2] = {{o.region[0], o.region[1]}, {o.region[2], o.region[1]}, {o.region[2], o.region[3]},
+                          {o.region[0], o.region[3]}, {o.region[0], o.region[1]}};
+  const std::size_t before = m.points.size();
+  Triangulation::Face_handle hint;
+  for(int side = 0; side < 4; ++side) {
+    const double dx = c[side + 1][0] - c[side][0], dy = c[side + 1][1] - c[side][1], length = std::hypot(dx, dy);
+    for(double t = 0.; t < length;) {
+      const Point p(c[side][0] + dx * t / length, c[side][1] + dy * t / length);
+      const double rho = scale * d.value(p);
+      t += rho > 0. ? std::max(1.07 / std::sqrt(rho), 1e-9 * length) : length;
+      const std::size_t n = m.t.number_of_vertices();
+      const Vertex_handle v = m.t.insert(lift(p.x(), p.y()), hint);
+      if(m.t.number_of_vertices() > n) v->info() = m.points.size();
+      m.points.push_back(p);
+      m.vertex.push_back(v);
+      hint = v->face();
+    }
+  }
+  return m.points.size() - before;
+}
+
+// The mesh's finite faces, over the points' x and y, for the rasters.
+penrose_tools::Plane_mesh plane_mesh(const Mesh& m)
+{
+  penrose_tools::Plane_mesh p;
+  for(const Point& q : m.points) { p.x.push_back(q.x()); p.y.push_back(q.y()); }
+  for(auto f : m.t.finite_face_handles())
+    p.faces.push_back({std::uint32_t(f->vertex(0)->info()), std::uint32_t(f->vertex(1)->info()),
+                       std::uint32_t(f->vertex(2)->info())});
+  return p;
+}
+
+// The mesh drawn into the pixels of `image`: each pixel is the linear
+// interpolation, over its face, of the image sampled at the face's vertices.
+template <class T>
+Raster<double> render(const penrose_tools::Plane_mesh& m, const Raster<T>& image, std::vector<char>& covered)
+{
+  const std::size_t c = image.channels;
+  std::vector<double> at_vertex(c * m.x.size());
+  for(std::size_t v = 0; v < m.x.size(); ++v)
+    for(std::size_t k = 0; k < c; ++k) at_vertex[c * v + k] = image(m.x[v], m.y[v], k);
+  Raster<double> r = {image.width, image.height, c, std::vector<double>(c * image.width * image.height, 0.),
+                      image.x0, image.y0, image.x1, image.y1};
+  covered.assign(image.width * image.height, 0);
+  penrose_tools::for_each_covered_pixel(m, image, [&](std::size_t p, std::size_t f, const std::array<double, 3>& w) {
+    covered[p] = 1;
+    for(std::size_t k = 0; k < c; ++k)
+      for(int i = 0; i < 3; ++i) r.values[c * p + k] += w[i] * at_vertex[c * m.faces[f][i] + k];
+  });
+  return r;
+}
+
+// Compares a rendering with the raster over the pixels of `mask`: the
+// largest absolute difference and the root mean square difference.
+template <class T>
+std::pair<double, double> difference(const Raster<double>& r, const Raster<T>& image, const std::vector<char>& mask)
+{
+  double largest = 0., squares = 0.;
+  std::size_t n = 0;
+  for(std::size_t p = 0; p < mask.size(); ++p)
+    if(mask[p])
+      for(std::size_t k = 0; k < image.channels; ++k, ++n) {
+        const double e = r.values[image.channels * p + k] - double(image.values[image.channels * p + k]);
+        largest = std::max(largest, std::abs(e));
+        squares += e * e;
+      }
+  return {largest, n ? std::sqrt(squares / double(n)) : 0.};
+}
+
+double psnr(double rms) { return rms > 0. ? -20. * std::log10(rms) : std::numeric_limits<double>::infinity(); }
+
+// The quality of the mesh and of the regular grid of as many vertices,
+// both measured over the pixels that the mesh covers.
+struct Quality
+{
+  double coverage = 0., max_error = 0., rms_error = 0., grid_max_error = 0., grid_rms_error = 0.;
+  std::size_t grid_vertices = 0;
+  Raster<double> rendering;
+};
+
+template <class T>
+Quality measure(const Mesh& m, const Raster<T>& image)
+{
+  Quality q;
+  std::vector<char> covered, grid_covered;
+  q.rendering = render(plane_mesh(m), image, covered);
+  const penrose_tools::Plane_mesh grid = penrose_tools::grid_mesh(image, m.t.number_of_vertices());
+  q.grid_vertices = grid.x.size();
+  const Raster<double> grid_rendering = render(grid, image, grid_covered);
+  std::tie(q.max_error, q.rms_error) = difference(q.rendering, image, covered);
+  std::tie(q.grid_max_error, q.grid_rms_error) = difference(grid_rendering, image, covered);
+  q.coverage = double(std::count(covered.begin(), covered.end(), 1)) / double(covered.size());
+  return q;
+}
+
+void write_points(const std::string& file, const Mesh& m, bool with_heights)
 {
   FILE* f = std::fopen(file.c_str(), "w");
   if(!f) throw std::runtime_error(file + ": cannot open for writing");
-  for(const Point& q : p) std::fprintf(f, "%.17g %.17g\n", q.x(), q.y());
+  for(std::size_t k = 0; k < m.points.size(); ++k)
+    if(with_heights) std::fprintf(f, "%.17g %.17g %.17g\n", m.points[k].x(), m.points[k].y(), m.vertex[k]->point().z());
+    else std::fprintf(f, "%.17g %.17g\n", m.points[k].x(), m.points[k].y());
   if(std::fclose(f) != 0) throw std::runtime_error(file + ": write failed");
 }
 
-void write_svg(const Options& o, const Density& d, const std::vector<Point>& p)
+void write_svg(const Options& o, const Input& in, const Mesh& m)
 {
   penrose_tools::Svg_writer svg(o.svg, o.region[0], o.region[1], o.region[2], o.region[3]);
-  if(!d.image_file.empty()) svg.background_image(d.image_file);
-  const double r = std::max(0.6, std::min(3., 0.25 * 1024. / std::sqrt(double(p.size()) + 1.)));
+  if(!in.colours.values.empty()) svg.background_image(in.file);
+  const double r = std::max(0.6, std::min(3., 0.25 * 1024. / std::sqrt(double(m.points.size()) + 1.)));
+  svg.begin_group("stroke=\"#1f4e9c\" stroke-width=\"" + std::to_string(0.4 * r) + "\" stroke-opacity=\"0.8\"");
+  for(auto e : m.t.finite_edges()) {
+    const auto& a = e.first->vertex(Triangulation::cw(e.second))->point();
+    const auto& b = e.first->vertex(Triangulation::ccw(e.second))->point();
+    svg.segment(a.x(), a.y(), b.x(), b.y());
+  }
+  svg.end_group();
   svg.begin_group("fill=\"black\"");
-  for(const Point& q : p) svg.dot(q.x(), q.y(), r);
+  for(const Point& q : m.points) svg.dot(q.x(), q.y(), r);
   svg.end_group();
   if(!svg.good()) throw std::runtime_error(o.svg + ": write failed");
+}
+
+void write_png(const std::string& file, int width, int height, int channels, const unsigned char* data)
+{
+  if(!stbi_write_png(file.c_str(), width, height, channels, data, width * channels))
+    throw std::runtime_error(file + ": cannot write the PNG");
+}
+
+unsigned char byte(double v) { return (unsigned char)std::lround(255. * std::min(std::max(v, 0.), 1.)); }
+
+// The mesh's edges, 1024 pixels across, over the image, or over the height
+// field in grey levels, lightened so that the edges stand out.
+void draw_png(const Options& o, const Input& in, const Mesh& m)
+{
+  const double w = o.region[2] - o.region[0], h = o.region[3] - o.region[1];
+  penrose_tools::Picture pic;
+  pic.width = 1024;
+  pic.height = std::max(1, int(std::lround(1024. * h / w)));
+  pic.rgb.assign(3 * std::size_t(pic.width) * std::size_t(pic.height), 255);
+  Raster<double> frame;
+  frame.width = std::size_t(pic.width);
+  frame.height = std::size_t(pic.height);
+  frame.x0 = o.region[0]; frame.y0 = o.region[1]; frame.x1 = o.region[2]; frame.y1 = o.region[3];
+  double lo = 0., hi = 1.;
+  if(!in.heights.values.empty()) {
+    lo = *std::min_element(in.heights.values.begin(), in.heights.values.end());
+    hi = std::max(lo + 1e-300, *std::max_element(in.heights.values.begin(), in.heights.values.end()));
+  }
+  for(int j = 0; j < pic.height; ++j)
+    for(int i = 0; i < pic.width; ++i) {
+      const double x = frame.x(i + 0.5), y = frame.y(j + 0.5);
+      unsigned char* p = &pic.rgb[3 * (std::size_t(j) * std::size_t(pic.width) + std::size_t(i))];
+      for(int c = 0; c < 3; ++c)
+        if(!in.colours.values.empty()) p[c] = byte(0.5 + 0.5 * in.colours(x, y, std::size_t(c)));
+        else if(!in.heights.values.empty()) p[c] = byte(0.4 + 0.6 * (in.heights(x, y) - lo) / (hi - lo));
+    }
+  const unsigned char colour[3] = {200, 30, 30};
+  for(auto e : m.t.finite_edges()) {
+    const auto& a = e.first->vertex(Triangulation::cw(e.second))->point();
+    const auto& b = e.first->vertex(Triangulation::ccw(e.second))->point();
+    pic.line(frame.u(a.x()), frame.v(a.y()), frame.u(b.x()), frame.v(b.y()), colour, 0.7);
+  }
+  write_png(o.png, pic.width, pic.height, 3, pic.rgb.data());
+}
+
+void write_reconstruction(const std::string& file, const Raster<double>& r)
+{
+  std::vector<unsigned char> rgb(r.values.size());
+  for(std::size_t k = 0; k < rgb.size(); ++k) rgb[k] = byte(r.values[k]);
+  write_png(file, int(r.width), int(r.height), 3, rgb.data());
+}
+
+struct Timings
+{
+  double read = 0., sample = 0., triangulate = 0., measure = 0., write = 0., total = 0.;
+};
+
+void write_stats(const Options& o, const Input& in, const Sampler& sampler, const Mesh& m, std::size_t sampled,
+                 std::size_t boundary, const Quality* q, const Timings& t)
+{
+  FILE* f = std::fopen(o.stats_json.c_str(), "w");
+  if(!f) throw std::runtime_error(o.stats_json + ": cannot open for writing");
+  std::fprintf(f, "{\"points\": %zu, \"expected_points\": %.6g, \"boundary_points\": %zu, "
+                  "\"vertices\": %zu, \"faces\": %zu, \"flips\": %zu, \"fallbacks\": %zu,\n"
+                  " \"read_seconds\": %.6g, \"sample_seconds\": %.6g, \"triangulate_seconds\": %.6g, "
+                  "\"measure_seconds\": %.6g, \"write_seconds\": %.6g, \"total_seconds\": %.6g,\n"
+                  " \"density\": \"%s\", \"region\": [%.17g, %.17g, %.17g, %.17g], \"correction\": %s",
+               sampled, sampler.expected_number_of_points(), boundary, m.t.number_of_vertices(),
+               m.t.number_of_faces(), m.t.number_of_flips(), m.t.number_of_fallbacks(),
+               t.read, t.sample, t.triangulate, t.measure, t.write, t.total,
+               in.file.empty() ? o.density.c_str() : in.file.c_str(),
+               o.region[0], o.region[1], o.region[2], o.region[3], o.correction ? "true" : "false");
+  if(q && !in.heights.values.empty())
+    std::fprintf(f, ",\n \"max_error\": %.6g, \"rms_error\": %.6g, \"grid_max_error\": %.6g, \"grid_rms_error\": %.6g, "
+                    "\"grid_vertices\": %zu, \"coverage\": %.6g",
+                 q->max_error, q->rms_error, q->grid_max_error, q->grid_rms_error, q->grid_vertices, q->coverage);
+  if(q && !in.colours.values.empty())
+    std::fprintf(f, ",\n \"psnr\": %.6g, \"grid_psnr\": %.6g, \"grid_vertices\": %zu, \"coverage\": %.6g",
+                 psnr(q->rms_error), psnr(q->grid_rms_error), q->grid_vertices, q->coverage);
+  std::fprintf(f, "}\n");
+  if(std::fclose(f) != 0) throw std::runtime_error(o.stats_json + ": write failed");
+}
+
+void run(Options o)
+{
+  const auto start = std::chrono::steady_clock::now();
+  penrose_tools::Progress_bar bar;
+  Timings time;
+  bar.stage("reading", 0., 0.1);
+  Input in = o.terrain.empty() ? (o.density.rfind("image:", 0) == 0 ? read_image(o) : Input()) : read_terrain(o);
+  if(!o.region_given && !in.heights.values.empty()) {
+    const Raster<double>& h = in.heights;
+    o.region[0] = h.x0; o.region[1] = h.y0; o.region[2] = h.x1; o.region[3] = h.y1;
+  } else if(!o.region_given && !in.colours.values.empty()) {
+    o.region[0] = o.region[1] = 0.;
+    o.region[2] = double(in.colours.width);
+    o.region[3] = double(in.colours.height);
+  }
+  if(!(o.region[2] > o.region[0] && o.region[3] > o.region[1]))
+    throw std::invalid_argument("the region is empty or degenerate");
+  place(in, o, o.region[0], o.region[1], o.region[2], o.region[3]);
+  const K::Iso_rectangle_2 region(o.region[0], o.region[1], o.region[2], o.region[3]);
+  const Density d = make_density(o, in, region);
+  time.read = seconds_since(start);
+
+  bar.stage("sampling", 0.1, 0.25);
+  auto t0 = std::chrono::steady_clock::now();
+  const std::unique_ptr<Sampler> sampler = make_sampler(o, region, d);
+  Mesh m;
+  m.points.reserve(std::size_t(sampler->expected_number_of_points() * 1.05) + 16);
+  (*sampler)(std::back_inserter(m.points));
+  const std::size_t sampled = m.points.size();
+  time.sample = seconds_since(t0);
+
+  bar.stage("triangulating", 0.25, 0.7);
+  t0 = std::chrono::steady_clock::now();
+  const Raster<double>& heights = in.heights;
+  auto lift = [&heights](double x, double y) { return K::Point_3(x, y, heights.values.empty() ? 0. : heights(x, y)); };
+  triangulate(m, *sampler, lift);
+  const std::size_t boundary = o.boundary ? add_boundary(m, o, d, sampler->density_scale(), lift) : 0;
+  time.triangulate = seconds_since(t0);
+
+  bar.stage("measuring", 0.7, 0.85);
+  t0 = std::chrono::steady_clock::now();
+  std::unique_ptr<Quality> q;
+  if(!o.stats_json.empty() || !o.reconstruct.empty()) {
+    if(!in.heights.values.empty()) q = std::make_unique<Quality>(measure(m, in.heights));
+    else if(!in.colours.values.empty()) q = std::make_unique<Quality>(measure(m, in.colours));
+  }
+  time.measure = seconds_since(t0);
+
+  bar.stage("writing", 0.85, 1.);
+  t0 = std::chrono::steady_clock::now();
+  if(!o.out_points.empty()) write_points(o.out_points, m, !in.heights.values.empty());
+  if(!o.out_mesh.empty()) CGAL::IO::write_triangulation(o.out_mesh, m.t, m.vertex);
+  if(!o.svg.empty()) write_svg(o, in, m);
+  if(!o.png.empty()) draw_png(o, in, m);
+  if(!o.reconstruct.empty()) write_reconstruction(o.reconstruct, q->rendering);
+  time.write = seconds_since(t0);
+  time.total = seconds_since(start);
+  if(!o.stats_json.empty()) write_stats(o, in, *sampler, m, sampled, boundary, q.get(), time);
+
+  std::cerr << "penrose_mesh: " << sampled << " points";
+  if(boundary) std::cerr << " + " << boundary << " on the border";
+  std::cerr << ", " << m.t.number_of_faces() << " triangles in " << time.total << " s (read " << time.read
+            << ", sample " << time.sample << ", triangulate " << time.triangulate << ")\n";
+  if(q && !in.heights.values.empty())
+    std::cerr << "penrose_mesh: rms error " << q->rms_error << " (grid " << q->grid_rms_error << "), max error "
+              << q->max_error << " (grid " << q->grid_max_error << ")\n";
+  if(q && !in.colours.values.empty())
+    std::cerr << "penrose_mesh: PSNR " << psnr(q->rms_error) << " dB (grid " << psnr(q->grid_rms_error) << " dB)\n";
 }
 
 } // namespace
@@ -167,29 +622,7 @@ int main(int argc, char** argv)
 {
   const Options o = parse(argc, argv);
   try {
-    const K::Iso_rectangle_2 region(o.region[0], o.region[1], o.region[2], o.region[3]);
-    if(!(o.region[2] > o.region[0] && o.region[3] > o.region[1]))
-      throw std::invalid_argument("the region is empty or degenerate");
-    const Density d = make_density(o, region);
-    const auto t0 = std::chrono::steady_clock::now();
-    const std::unique_ptr<Sampler> sampler = make_sampler(o, region, d);
-    std::vector<Point> points;
-    points.reserve(std::size_t(sampler->expected_number_of_points() * 1.05) + 16);
-    (*sampler)(std::back_inserter(points));
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-
-    if(!o.out_points.empty()) write_points(o.out_points, points);
-    if(!o.svg.empty()) write_svg(o, d, points);
-    if(!o.stats_json.empty()) {
-      FILE* f = std::fopen(o.stats_json.c_str(), "w");
-      if(!f) throw std::runtime_error(o.stats_json + ": cannot open for writing");
-      std::fprintf(f, "{\"points\": %zu, \"expected_points\": %.6g, \"sample_seconds\": %.6g, "
-                      "\"density\": \"%s\", \"region\": [%.17g, %.17g, %.17g, %.17g], \"correction\": %s}\n",
-                   points.size(), sampler->expected_number_of_points(), seconds, o.density.c_str(),
-                   o.region[0], o.region[1], o.region[2], o.region[3], o.correction ? "true" : "false");
-      std::fclose(f);
-    }
-    std::cerr << "penrose_mesh: " << points.size() << " points in " << seconds << " s\n";
+    run(o);
   } catch(const std::exception& e) {
     std::cerr << "penrose_mesh: " << e.what() << "\n";
     return 1;

@@ -45,7 +45,7 @@ struct Height_field
 
 namespace internal {
 
-inline std::runtime_error height_field_error(const std::string& file, const std::string& why)
+inline std::runtime_error file_error(const std::string& file, const std::string& why)
 {
   return std::runtime_error(file + ": " + why);
 }
@@ -62,10 +62,10 @@ inline std::string lowercase_extension(const std::string& file)
 inline std::string read_whole_file(const std::string& file)
 {
   std::ifstream in(file, std::ios::binary);
-  if(!in) throw height_field_error(file, std::string("cannot open (") + std::strerror(errno) + ")");
+  if(!in) throw file_error(file, std::string("cannot open (") + std::strerror(errno) + ")");
   std::string s((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if(in.bad()) throw height_field_error(file, "read error");
-  if(s.empty()) throw height_field_error(file, "empty file");
+  if(in.bad()) throw file_error(file, "read error");
+  if(s.empty()) throw file_error(file, "empty file");
   return s;
 }
 
@@ -74,7 +74,7 @@ inline void check_dimensions(const std::string& file, double w, double h, std::s
   if(!(w >= 1. && h >= 1. && w * h <= double(max_cells))) {
     char buf[96];
     std::snprintf(buf, sizeof buf, "absurd dimensions %.15g x %.15g", w, h);
-    throw height_field_error(file, buf);
+    throw file_error(file, buf);
   }
 }
 
@@ -95,7 +95,7 @@ inline Height_field read_ESRI_ASCII_grid(const std::string& file, std::size_t ma
 {
   const std::string text = internal::read_whole_file(file);
   const char* p = text.c_str();
-  auto fail = [&](const std::string& why) { return internal::height_field_error(file, why); };
+  auto fail = [&](const std::string& why) { return internal::file_error(file, why); };
   double ncols = -1., nrows = -1., xll = NAN, yll = NAN, cell = -1., nodata = NAN;
   bool x_centre = false, y_centre = false;
   // header: "keyword value" lines, until the first line that starts with a number
@@ -167,7 +167,7 @@ truncated or corrupt.
 inline Height_field read_height_image(const std::string& file, std::size_t max_cells = std::size_t(1) << 28)
 {
   const std::string bytes = internal::read_whole_file(file);
-  auto fail = [&](const std::string& why) { return internal::height_field_error(file, why); };
+  auto fail = [&](const std::string& why) { return internal::file_error(file, why); };
   const stbi_uc* data = reinterpret_cast<const stbi_uc*>(bytes.data());
   const int size = bytes.size() > std::size_t(std::numeric_limits<int>::max()) ? std::numeric_limits<int>::max()
                                                                                  : int(bytes.size());
@@ -208,7 +208,7 @@ inline void write_bytes(const std::string& file, const std::string& bytes)
   std::ofstream out(file, std::ios::binary);
   out.write(bytes.data(), std::streamsize(bytes.size()));
   out.close();
-  if(!out) throw height_field_error(file, "cannot write");
+  if(!out) throw file_error(file, "cannot write");
 }
 
 // Heights as 16-bit samples, rounded and clamped to [0, 65535], big-endian.
@@ -323,7 +323,7 @@ inline void write_height_field(const std::string& file, const Height_field& hf)
   if(e == "asc") write_ESRI_ASCII_grid(file, hf);
   else if(e == "png") write_PNG_16(file, hf);
   else if(e == "pgm") write_PGM_16(file, hf);
-  else throw internal::height_field_error(file, "unknown height field format '." + e + "' (asc, png or pgm)");
+  else throw internal::file_error(file, "unknown height field format '." + e + "' (asc, png or pgm)");
 }
 
 } // namespace IO

@@ -45,7 +45,7 @@ not an image, absurd dimensions (more than `max_pixels`), truncated or corrupt.
 inline Rgb_image read_rgb_image(const std::string& file, std::size_t max_pixels = std::size_t(1) << 28)
 {
   const std::string bytes = internal::read_whole_file(file);
-  auto fail = [&](const std::string& why) { return internal::height_field_error(file, why); };
+  auto fail = [&](const std::string& why) { return internal::file_error(file, why); };
   const stbi_uc* data = reinterpret_cast<const stbi_uc*>(bytes.data());
   const int size = bytes.size() > std::size_t(std::numeric_limits<int>::max()) ? std::numeric_limits<int>::max()
                                                                                  : int(bytes.size());

@@ -1,0 +1,166 @@
+// Copyright (c) 2026 The Penrose_Delaunay_triangulation_2 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Rasters for penrose_mesh: bilinear lookup over a rectangle, and the maps
+// that turn an image or a height field into a sampling density.
+
+#ifndef PENROSE_TOOLS_RASTER_MAPS_H
+#define PENROSE_TOOLS_RASTER_MAPS_H
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <numeric>
+#include <vector>
+
+namespace penrose_tools {
+
+// A raster of `channels` values a pixel stretched over the rectangle
+// [x0, x1] x [y0, y1], row 0 at the top; pixel (i, j) has its centre at
+// u = i + 1/2, v = j + 1/2 in pixel coordinates.
+template <class T>
+struct Raster
+{
+  std::size_t width = 0, height = 0, channels = 1;
+  std::vector<T> values;
+  double x0 = 0., y0 = 0., x1 = 1., y1 = 1.;
+
+  double u(double x) const { return (x - x0) / (x1 - x0) * double(width); }
+  double v(double y) const { return (y1 - y) / (y1 - y0) * double(height); }
+  double x(double u) const { return x0 + u / double(width) * (x1 - x0); }
+  double y(double v) const { return y1 - v / double(height) * (y1 - y0); }
+  std::size_t clamp(long i, std::size_t n) const { return std::size_t(std::min(std::max(i, 0L), long(n) - 1)); }
+  const T* at(long i, long j) const { return &values[channels * (clamp(j, height) * width + clamp(i, width))]; }
+
+  // The bilinear interpolation of channel c at (x, y), clamped at the border.
+  double operator()(double x, double y, std::size_t c = 0) const
+  {
+    const double su = u(x) - 0.5, sv = v(y) - 0.5, fu = std::floor(su), fv = std::floor(sv);
+    const double a = su - fu, b = sv - fv;
+    const long i = long(fu), j = long(fv);
+    return (1 - a) * (1 - b) * at(i, j)[c] + a * (1 - b) * at(i + 1, j)[c]
+         + (1 - a) * b * at(i, j + 1)[c] + a * b * at(i + 1, j + 1)[c];
+  }
+};
+
+// Two passes of a box filter of the given radius, rows then columns, with the
+// border value repeated: close to a Gaussian of standard deviation 1.15 r.
+inline void smooth(std::vector<double>& v, std::size_t w, std::size_t h, int radius)
+{
+  if(radius < 1) return;
+  std::vector<double> line, sums;
+  auto blur_line = [&](double* first, std::size_t n, std::size_t stride) {
+    line.resize(n);
+    sums.assign(n + 1, 0.);
+    for(std::size_t k = 0; k < n; ++k) line[k] = first[k * stride];
+    for(int pass = 0; pass < 2; ++pass) {
+      for(std::size_t k = 0; k < n; ++k) sums[k + 1] = sums[k] + line[k];
+      for(long k = 0; k < long(n); ++k) {
+        const long lo = k - radius, hi = k + radius;  // the window, its missing cells taken at the border
+        const double inside = sums[std::size_t(std::min(hi, long(n) - 1) + 1)] - sums[std::size_t(std::max(lo, 0L))];
+        const double before = lo < 0 ? -lo * line[0] : 0., after = hi >= long(n) ? (hi - long(n) + 1) * line[n - 1] : 0.;
+        first[std::size_t(k) * stride] = (inside + before + after) / double(2 * radius + 1);
+      }
+      if(pass == 0)
+        for(std::size_t k = 0; k < n; ++k) line[k] = first[k * stride];
+    }
+  };
+  for(std::size_t j = 0; j < h; ++j) blur_line(&v[j * w], w, 1);
+  for(std::size_t i = 0; i < w; ++i) blur_line(&v[i], h, w);
+}
+
+inline double mean(const std::vector<double>& v)
+{
+  return v.empty() ? 0. : std::accumulate(v.begin(), v.end(), 0.) / double(v.size());
+}
+
+// log(1 + L / mean L): the density of an HDR image then follows the contrast
+// that the eye sees, and the result does not depend on the radiance's unit.
+inline void log_transform(std::vector<double>& v)
+{
+  const double m = mean(v);
+  if(m > 0.)
+    for(double& x : v) x = std::log1p(std::max(x, 0.) / m);
+}
+
+// The Sobel gradient magnitude, smoothed over one pixel so that the samples
+// gather on both sides of an edge, plus a floor of a tenth of its mean so that
+// flat regions keep a few samples.
+inline void gradient_magnitude(std::vector<double>& v, std::size_t w, std::size_t h)
+{
+  std::vector<double> g(v.size());
+  auto at = [&](long i, long j) {
+    return v[std::size_t(std::min(std::max(j, 0L), long(h) - 1)) * w + std::size_t(std::min(std::max(i, 0L), long(w) - 1))];
+  };
+  for(long j = 0; j < long(h); ++j)
+    for(long i = 0; i < long(w); ++i) {
+      const double gx = at(i + 1, j - 1) + 2 * at(i + 1, j) + at(i + 1, j + 1) - at(i - 1, j - 1) - 2 * at(i - 1, j) - at(i - 1, j + 1);
+      const double gy = at(i - 1, j + 1) + 2 * at(i, j + 1) + at(i + 1, j + 1) - at(i - 1, j - 1) - 2 * at(i, j - 1) - at(i + 1, j - 1);
+      g[std::size_t(j) * w + std::size_t(i)] = std::hypot(gx, gy);
+    }
+  smooth(g, w, h, 1);
+  const double floor = 0.1 * mean(g);
+  for(double& x : g) x += floor;
+  v.swap(g);
+}
+
+inline void invert(std::vector<double>& v)
+{
+  const double top = v.empty() ? 0. : *std::max_element(v.begin(), v.end());
+  for(double& x : v) x = top - x;
+}
+
+inline void apply_gamma(std::vector<double>& v, double gamma)
+{
+  if(gamma != 1.)
+    for(double& x : v) x = std::pow(std::max(x, 0.), gamma);
+}
+
+/*
+The density for meshing a height field: the largest absolute eigenvalue of
+its Hessian, |hxx + hyy| / 2 + sqrt(((hxx - hyy) / 2)^2 + hxy^2), smoothed over
+`radius` pixels, raised to the power 2/3. Linear interpolation over a
+triangle of diameter d errs by about kappa d^2 where the curvature is kappa;
+with n = integral of rho vertices, the integral of (kappa / rho)^2, the squared
+RMS error, is smallest for rho proportional to kappa^(2/3). A floor of a tenth
+of the mean keeps flat regions meshed.
+`dx`, `dy`: the size of a pixel in the plane; `heights` already scaled.
+*/
+inline std::vector<double> curvature_density(const std::vector<double>& heights, std::size_t w, std::size_t h,
+                                             double dx, double dy, int radius)
+{
+  std::vector<double> k(heights.size(), 0.);
+  auto at = [&](long i, long j) {
+    return heights[std::size_t(std::min(std::max(j, 0L), long(h) - 1)) * w + std::size_t(std::min(std::max(i, 0L), long(w) - 1))];
+  };
+  for(long j = 0; j < long(h); ++j)
+    for(long i = 0; i < long(w); ++i) {
+      const double c = at(i, j);
+      const double hxx = (at(i + 1, j) - 2 * c + at(i - 1, j)) / (dx * dx);
+      const double hyy = (at(i, j + 1) - 2 * c + at(i, j - 1)) / (dy * dy);
+      const double hxy = (at(i + 1, j + 1) - at(i + 1, j - 1) - at(i - 1, j + 1) + at(i - 1, j - 1)) / (4 * dx * dy);
+      k[std::size_t(j) * w + std::size_t(i)] = 0.5 * std::abs(hxx + hyy) + std::hypot(0.5 * (hxx - hyy), hxy);
+    }
+  smooth(k, w, h, radius);
+  apply_gamma(k, 2. / 3.);
+  const double floor = 0.1 * mean(k);
+  for(double& x : k) x += floor;
+  return k;
+}
+
+// Multiplies the density by 1 / (1 + d / d0), d the distance from the viewer
+// at (vx, vy) and d0 a fiftieth of the raster's diagonal: a vertex then errs
+// by about the same angle seen from the viewer, as in a view-dependent mesh.
+inline void weight_by_viewer(Raster<double>& r, double vx, double vy)
+{
+  const double d0 = 0.02 * std::hypot(r.x1 - r.x0, r.y1 - r.y0);
+  for(std::size_t j = 0; j < r.height; ++j)
+    for(std::size_t i = 0; i < r.width; ++i) {
+      const double d = std::hypot(r.x(i + 0.5) - vx, r.y(j + 0.5) - vy);
+      r.values[j * r.width + i] /= 1. + d / d0;
+    }
+}
+
+} // namespace penrose_tools
+
+#endif // PENROSE_TOOLS_RASTER_MAPS_H
