@@ -133,7 +133,7 @@ public:
     const internal::Penrose::Sampling_context& context = sampler.context();
     Flat_mesh mesh;
     internal::Penrose::Base_triangulation_builder builder(context, mesh);
-    builder.build();
+    builder.build(sampler.expected_number_of_points());
     stats_ = Construction_statistics();
     const std::size_t n = mesh.x.size();
     std::vector<char> keep(n, 0);

@@ -45,7 +45,6 @@ public:
     double importance;
     Sample_birth birth;
     bool is_sample;
-    bool needed;            // a corner of a tile that is subdivided
     signed char kept;       // -1: not decided yet
   };
 
@@ -66,17 +65,26 @@ public:
     return k;
   }
 
-  void build()
+  // `expected_points` sizes the arrays once: growing them level after level
+  // would fault fresh pages in at every reallocation.
+  void build(double expected_points)
   {
+    const std::size_t n = std::size_t(1.25 * expected_points) + 64;
+    m_.x.reserve(n); m_.y.reserve(n); m_.vertex_face.reserve(n);
+    v_.reserve(n); needed_.reserve(n);
+    m_.faces.reserve(2 * n); m_.face_alive.reserve(2 * n);
+    face_tile_.assign(2 * n, null);
+    frontier_.reserve(n); next_.reserve(n);
     for(int i = 0; i < 3; ++i) add_vertex(c_.root_x(i), c_.root_y(i));
     Tile root;
     root.code = 0; root.threshold = 0; root.type = FAT_F; root.direction = 15;
     root.corners = {{0, 1, 2}};
+    for(int i = 0; i < 3; ++i) { root.x[i] = m_.x[i]; root.y[i] = m_.y[i]; root.importance[i] = v_[i].importance; }
     root.face = m_.create_face(0, 1, 2);
     root.refine = refines(root, 0);
     if(root.refine) frontier_.push_back(root);
     for(int level = 0; !frontier_.empty(); ++level) {
-      if(face_tile_.size() < m_.faces.size()) face_tile_.resize(m_.faces.size() * 2, null);
+      if(face_tile_.size() < m_.faces.size()) face_tile_.resize(m_.faces.size() + m_.faces.size() / 2, null);
       for(std::size_t k = 0; k < frontier_.size(); ++k) face_tile_[frontier_[k].face] = Index(k);
       next_.clear();
       for(std::size_t k = 0; k < frontier_.size(); ++k) create_vertices(k, level);
@@ -93,6 +101,9 @@ private:
   {
     std::uint64_t code, threshold;
     std::array<Index, 3> corners;
+    // the corners' coordinates and importances, carried along as the
+    // depth-first sampler does, so that no vertex is looked up
+    std::array<double, 3> x, y, importance;
     Index face;
     Tile_type type;
     std::uint8_t direction;
@@ -113,19 +124,15 @@ private:
     s.importance = c_.importance(x, y);
     s.birth = Sample_birth{0, 0, 0, 0};
     s.is_sample = false;
-    s.needed = false;
     s.kept = -1;
     v_.push_back(s);
+    needed_.push_back(0);
     return v;
   }
 
   bool refines(const Tile& t, int level) const
   {
-    double x[3], y[3], importance[3];
-    for(int i = 0; i < 3; ++i) {
-      x[i] = m_.x[t.corners[i]]; y[i] = m_.y[t.corners[i]]; importance[i] = v_[t.corners[i]].importance;
-    }
-    return c_.should_refine(level, x, y, importance);
+    return c_.should_refine(level, t.x.data(), t.y.data(), t.importance.data());
   }
 
   // The tile still to be subdivided whose face is g, or null.
@@ -143,13 +150,18 @@ private:
     const Flat_mesh::Face& face = m_.faces[t.face];
     const int child_level = level + 1;
     std::array<Index, 5> v = {{t.corners[0], t.corners[1], t.corners[2], null, null}};
+    double vx[5] = {t.x[0], t.x[1], t.x[2]}, vy[5] = {t.y[0], t.y[1], t.y[2]};
+    double vi[5] = {t.importance[0], t.importance[1], t.importance[2]};
     for(int n = 0; n < r.number_of_new_vertices; ++n) {
       const New_vertex_rule& nv = r.new_vertices[n];
+      const int a = nv.near_corner, b = nv.far_corner;
+      vx[3 + n] = vx[a] + split_fraction * (vx[b] - vx[a]);
+      vy[3 + n] = vy[a] + split_fraction * (vy[b] - vy[a]);
       Index x = t.pending_vertex[nv.edge];
-      if(x == null) {
-        const Index a = v[nv.near_corner], b = v[nv.far_corner];
-        x = add_vertex(m_.x[a] + split_fraction * (m_.x[b] - m_.x[a]),
-                       m_.y[a] + split_fraction * (m_.y[b] - m_.y[a]));
+      if(x != null) vi[3 + n] = v_[x].importance;
+      else {
+        x = add_vertex(vx[3 + n], vy[3 + n]);
+        vi[3 + n] = v_[x].importance;
         // a tile across that is still to come will split the edge here too
         const Index across = tile_of_face(face.n[face_edge(nv.edge)]);
         if(across != null && across > k) {
@@ -174,13 +186,16 @@ private:
       Tile child;
       child.code = t.code * 4 + cr.code_pair;
       child.threshold = t.threshold + pair_weight(cr.code_pair, child_level);
-      child.corners = {{v[cr.corners[0]], v[cr.corners[1]], v[cr.corners[2]]}};
+      for(int i = 0; i < 3; ++i) {
+        const int ci = cr.corners[i];
+        child.corners[i] = v[ci]; child.x[i] = vx[ci]; child.y[i] = vy[ci]; child.importance[i] = vi[ci];
+      }
       child.face = null;
       child.type = cr.type;
       child.direction = add_direction(t.direction, cr.direction_step);
       child.refine = refines(child, child_level);
       if(!child.refine) continue;
-      for(Index corner : child.corners) v_[corner].needed = true;
+      for(Index corner : child.corners) needed_[corner] = 1;
       t.child_slot[c] = Index(next_.size());
       next_.push_back(child);
     }
@@ -188,7 +203,7 @@ private:
 
   bool present(Index x)
   {
-    if(v_[x].needed) return true;
+    if(needed_[x]) return true;
     if(v_[x].kept < 0) kept(x, scratch_);
     return v_[x].kept > 0;
   }
@@ -264,6 +279,7 @@ private:
   const Sampling_context& c_;
   Flat_mesh& m_;
   std::vector<Vertex_state> v_;
+  std::vector<char> needed_;         // a corner of a tile that is subdivided
   std::vector<Tile> frontier_, next_;
   Placed_sample scratch_;
   std::vector<Index> face_tile_;     // frontier tile of an intact face, or null
