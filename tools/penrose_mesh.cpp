@@ -36,7 +36,6 @@
 #include <limits>
 #include <memory>
 #include <string>
-#include <unordered_map>
 #include <vector>
 
 namespace {
@@ -229,8 +228,8 @@ Input read_image(const Options& o)
   return in;
 }
 
-// The smoothing of the curvature follows the spacing of the vertices asked
-// for: the density should not vary faster than the mesh can follow.
+// The density raster of a terrain has a pixel for about every half vertex
+// spacing: finer would only cost time (see curvature_density).
 Input read_terrain(const Options& o)
 {
   Input in;
@@ -243,10 +242,12 @@ Input read_terrain(const Options& o)
   for(double& v : h.values) v *= o.height_scale;
   h.x0 = hf.x0; h.y0 = hf.y0; h.x1 = hf.x1; h.y1 = hf.y1;
   const double spacing = o.points > 0. ? std::sqrt(double(h.width * h.height) / o.points) : 4.;
-  const int radius = int(std::min(16., std::max(1., std::round(0.5 * spacing))));
-  in.density = h;
-  in.density.values = penrose_tools::curvature_density(h.values, h.width, h.height, (h.x1 - h.x0) / double(h.width),
-                                                       (h.y1 - h.y0) / double(h.height), radius);
+  const std::size_t block = std::size_t(std::min(16., std::max(1., std::floor(0.5 * spacing))));
+  in.density.width = h.width;
+  in.density.height = h.height;
+  in.density.values = penrose_tools::curvature_density(h.values, in.density.width, in.density.height,
+                                                       (h.x1 - h.x0) / double(h.width),
+                                                       (h.y1 - h.y0) / double(h.height), block);
   penrose_tools::apply_gamma(in.density.values, o.gamma);
   return in;
 }
@@ -265,13 +266,14 @@ struct Density
   std::function<double(const K::Iso_rectangle_2&)> upper_bound;  // empty: probes
 };
 
-Density make_density(const Options& o, const Input& in, const K::Iso_rectangle_2& region)
+// Takes the density raster of `in`, if any.
+Density make_density(const Options& o, Input& in, const K::Iso_rectangle_2& region)
 {
   const double x0 = o.region[0], y0 = o.region[1], x1 = o.region[2], y1 = o.region[3];
   Density d;
   if(!in.density.values.empty()) {
     auto raster = std::make_shared<CGAL::Raster_density_2<K>>(in.density.width, in.density.height,
-                                                              in.density.values, region);
+                                                              std::move(in.density.values), region);
     d.value = [raster](const Point& p) { return (*raster)(p); };
     d.upper_bound = [raster](const K::Iso_rectangle_2& b) { return raster->upper_bound(b); };
   } else if(o.density == "constant") d.value = [](const Point&) { return 1.; };
@@ -301,16 +303,10 @@ std::unique_ptr<Sampler> make_sampler(const Options& o, const K::Iso_rectangle_2
   return std::make_unique<Sampler>(region, d.value, use_correction_vectors(o.correction).density_control_factor(o.scale));
 }
 
-struct Point_hash
-{
-  std::size_t operator()(const std::pair<double, double>& p) const
-  {
-    return std::hash<double>()(p.first) * 0x9e3779b97f4a7c15ull ^ std::hash<double>()(p.second);
-  }
-};
-
 // The triangulation of the sampler's points, each vertex's info its index in
-// `points`; `vertex[k]` is the vertex at points[k] (the first of duplicates).
+// `points`, and `vertex[k]` the vertex at points[k]. The points are in the
+// order in which the triangulation reports its vertices (the tile tree's,
+// breadth first), and --out-points and --out-mesh share it.
 struct Mesh
 {
   Triangulation t;
@@ -321,19 +317,13 @@ struct Mesh
 template <class Lift>
 void triangulate(Mesh& m, const Sampler& sampler, const Lift& lift)
 {
-  std::unordered_map<std::pair<double, double>, Vertex_handle, Point_hash> at;
-  at.reserve(m.points.size());
+  m.points.reserve(std::size_t(sampler.expected_number_of_points() * 1.05) + 16);
+  m.vertex.reserve(m.points.capacity());
   m.t.build(sampler, lift, [&](Vertex_handle v, const Sampler::Sample& s) {
-    v->info() = std::numeric_limits<std::size_t>::max();
-    at.emplace(std::make_pair(s.point.x(), s.point.y()), v);
+    v->info() = m.points.size();
+    m.points.push_back(s.point);
+    m.vertex.push_back(v);
   });
-  m.vertex.resize(m.points.size());
-  for(std::size_t k = 0; k < m.points.size(); ++k) {
-    const auto it = at.find(std::make_pair(m.points[k].x(), m.points[k].y()));
-    if(it == at.end()) throw std::logic_error("a sample is missing from the triangulation");
-    m.vertex[k] = it->second;
-    if(it->second->info() == std::numeric_limits<std::size_t>::max()) it->second->info() = k;
-  }
 }
 
 // Points along the border, counter-clockwise from the lower left corner,
@@ -568,20 +558,19 @@ void run(Options o)
   const Density d = make_density(o, in, region);
   time.read = seconds_since(start);
 
-  bar.stage("sampling", 0.1, 0.25);
+  bar.stage("sampling", 0.1, 0.2);
   auto t0 = std::chrono::steady_clock::now();
   const std::unique_ptr<Sampler> sampler = make_sampler(o, region, d);
-  Mesh m;
-  m.points.reserve(std::size_t(sampler->expected_number_of_points() * 1.05) + 16);
-  (*sampler)(std::back_inserter(m.points));
-  const std::size_t sampled = m.points.size();
   time.sample = seconds_since(t0);
 
-  bar.stage("triangulating", 0.25, 0.7);
+  // the tile tree is sampled while the triangulation is derived from it
+  bar.stage("triangulating", 0.2, 0.7);
   t0 = std::chrono::steady_clock::now();
   const Raster<double>& heights = in.heights;
   auto lift = [&heights](double x, double y) { return K::Point_3(x, y, heights.values.empty() ? 0. : heights(x, y)); };
+  Mesh m;
   triangulate(m, *sampler, lift);
+  const std::size_t sampled = m.points.size();
   const std::size_t boundary = o.boundary ? add_boundary(m, o, d, sampler->density_scale(), lift) : 0;
   time.triangulate = seconds_since(t0);
 

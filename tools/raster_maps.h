@@ -43,30 +43,41 @@ struct Raster
   }
 };
 
-// Two passes of a box filter of the given radius, rows then columns, with the
-// border value repeated: close to a Gaussian of standard deviation 1.15 r.
+// One pass of a box filter of the given radius over n lines of `length`
+// values, value k of line l at v[l * line_step + k * step], with the border
+// value repeated. The running sum runs over whole lines at once when the lines
+// are the rows (step = width), so that columns are filtered in memory order.
+inline void box_pass(std::vector<double>& v, std::size_t length, std::size_t step, std::size_t lines,
+                     std::size_t line_step, int radius)
+{
+  const std::vector<double> in = v;
+  std::vector<double> sum(lines, 0.);
+  auto add = [&](long k, double sign) {
+    const std::size_t c = std::size_t(std::min(std::max(k, 0L), long(length) - 1)) * step;
+    for(std::size_t l = 0; l < lines; ++l) sum[l] += sign * in[c + l * line_step];
+  };
+  for(long k = -radius; k <= radius; ++k) add(k, 1.);
+  const double scale = 1. / double(2 * radius + 1);
+  for(long k = 0; k < long(length); ++k) {
+    for(std::size_t l = 0; l < lines; ++l) v[std::size_t(k) * step + l * line_step] = sum[l] * scale;
+    add(k + radius + 1, 1.);
+    add(k - radius, -1.);
+  }
+}
+
+// Two passes of a box filter of the given radius, across then down: close to
+// a Gaussian of standard deviation 1.15 r.
 inline void smooth(std::vector<double>& v, std::size_t w, std::size_t h, int radius)
 {
   if(radius < 1) return;
-  std::vector<double> line, sums;
-  auto blur_line = [&](double* first, std::size_t n, std::size_t stride) {
-    line.resize(n);
-    sums.assign(n + 1, 0.);
-    for(std::size_t k = 0; k < n; ++k) line[k] = first[k * stride];
-    for(int pass = 0; pass < 2; ++pass) {
-      for(std::size_t k = 0; k < n; ++k) sums[k + 1] = sums[k] + line[k];
-      for(long k = 0; k < long(n); ++k) {
-        const long lo = k - radius, hi = k + radius;  // the window, its missing cells taken at the border
-        const double inside = sums[std::size_t(std::min(hi, long(n) - 1) + 1)] - sums[std::size_t(std::max(lo, 0L))];
-        const double before = lo < 0 ? -lo * line[0] : 0., after = hi >= long(n) ? (hi - long(n) + 1) * line[n - 1] : 0.;
-        first[std::size_t(k) * stride] = (inside + before + after) / double(2 * radius + 1);
-      }
-      if(pass == 0)
-        for(std::size_t k = 0; k < n; ++k) line[k] = first[k * stride];
+  for(int pass = 0; pass < 2; ++pass) {
+    for(std::size_t j = 0; j < h; ++j) {  // one row at a time, to stay in cache
+      std::vector<double> row(v.begin() + long(j * w), v.begin() + long((j + 1) * w));
+      box_pass(row, w, 1, 1, 0, radius);
+      std::copy(row.begin(), row.end(), v.begin() + long(j * w));
     }
-  };
-  for(std::size_t j = 0; j < h; ++j) blur_line(&v[j * w], w, 1);
-  for(std::size_t i = 0; i < w; ++i) blur_line(&v[i], h, w);
+    box_pass(v, h, w, w, 1, radius);
+  }
 }
 
 inline double mean(const std::vector<double>& v)
@@ -96,7 +107,7 @@ inline void gradient_magnitude(std::vector<double>& v, std::size_t w, std::size_
     for(long i = 0; i < long(w); ++i) {
       const double gx = at(i + 1, j - 1) + 2 * at(i + 1, j) + at(i + 1, j + 1) - at(i - 1, j - 1) - 2 * at(i - 1, j) - at(i - 1, j + 1);
       const double gy = at(i - 1, j + 1) + 2 * at(i, j + 1) + at(i + 1, j + 1) - at(i - 1, j - 1) - 2 * at(i, j - 1) - at(i + 1, j - 1);
-      g[std::size_t(j) * w + std::size_t(i)] = std::hypot(gx, gy);
+      g[std::size_t(j) * w + std::size_t(i)] = std::sqrt(gx * gx + gy * gy);
     }
   smooth(g, w, h, 1);
   const double floor = 0.1 * mean(g);
@@ -116,18 +127,38 @@ inline void apply_gamma(std::vector<double>& v, double gamma)
     for(double& x : v) x = std::pow(std::max(x, 0.), gamma);
 }
 
+// The means of the blocks of b x b pixels (fewer at the right and bottom
+// borders); w and h become the dimensions of the result.
+inline std::vector<double> block_means(const std::vector<double>& v, std::size_t& w, std::size_t& h, std::size_t b)
+{
+  const std::size_t bw = (w + b - 1) / b, bh = (h + b - 1) / b;
+  std::vector<double> sum(bw * bh, 0.), count(bw * bh, 0.);
+  for(std::size_t j = 0; j < h; ++j)
+    for(std::size_t i = 0; i < w; ++i) {
+      sum[(j / b) * bw + i / b] += v[j * w + i];
+      count[(j / b) * bw + i / b] += 1.;
+    }
+  for(std::size_t k = 0; k < sum.size(); ++k) sum[k] /= count[k];
+  w = bw;
+  h = bh;
+  return sum;
+}
+
 /*
 The density for meshing a height field: the largest absolute eigenvalue of
-its Hessian, |hxx + hyy| / 2 + sqrt(((hxx - hyy) / 2)^2 + hxy^2), smoothed over
-`radius` pixels, raised to the power 2/3. Linear interpolation over a
+its Hessian, |hxx + hyy| / 2 + sqrt(((hxx - hyy) / 2)^2 + hxy^2), averaged
+over blocks of `block` pixels and smoothed over a block more (the density
+need not vary faster than the vertices are spaced, and a coarser raster is
+sampled faster), raised to the power 2/3. Linear interpolation over a
 triangle of diameter d errs by about kappa d^2 where the curvature is kappa;
 with n = integral of rho vertices, the integral of (kappa / rho)^2, the squared
 RMS error, is smallest for rho proportional to kappa^(2/3). A floor of a tenth
 of the mean keeps flat regions meshed.
-`dx`, `dy`: the size of a pixel in the plane; `heights` already scaled.
+`dx`, `dy`: the size of a pixel in the plane; `heights` already scaled; `w`
+and `h` become the dimensions of the result.
 */
-inline std::vector<double> curvature_density(const std::vector<double>& heights, std::size_t w, std::size_t h,
-                                             double dx, double dy, int radius)
+inline std::vector<double> curvature_density(const std::vector<double>& heights, std::size_t& w, std::size_t& h,
+                                             double dx, double dy, std::size_t block)
 {
   std::vector<double> k(heights.size(), 0.);
   auto at = [&](long i, long j) {
@@ -139,10 +170,12 @@ inline std::vector<double> curvature_density(const std::vector<double>& heights,
       const double hxx = (at(i + 1, j) - 2 * c + at(i - 1, j)) / (dx * dx);
       const double hyy = (at(i, j + 1) - 2 * c + at(i, j - 1)) / (dy * dy);
       const double hxy = (at(i + 1, j + 1) - at(i + 1, j - 1) - at(i - 1, j + 1) + at(i - 1, j - 1)) / (4 * dx * dy);
-      k[std::size_t(j) * w + std::size_t(i)] = 0.5 * std::abs(hxx + hyy) + std::hypot(0.5 * (hxx - hyy), hxy);
+      const double d = 0.5 * (hxx - hyy);
+      k[std::size_t(j) * w + std::size_t(i)] = 0.5 * std::abs(hxx + hyy) + std::sqrt(d * d + hxy * hxy);
     }
-  smooth(k, w, h, radius);
-  apply_gamma(k, 2. / 3.);
+  if(block > 1) k = block_means(k, w, h, block);
+  smooth(k, w, h, 1);
+  for(double& x : k) x = std::cbrt(x * x);
   const double floor = 0.1 * mean(k);
   for(double& x : k) x += floor;
   return k;
@@ -156,7 +189,7 @@ inline void weight_by_viewer(Raster<double>& r, double vx, double vy)
   const double d0 = 0.02 * std::hypot(r.x1 - r.x0, r.y1 - r.y0);
   for(std::size_t j = 0; j < r.height; ++j)
     for(std::size_t i = 0; i < r.width; ++i) {
-      const double d = std::hypot(r.x(i + 0.5) - vx, r.y(j + 0.5) - vy);
+      const double dx = r.x(i + 0.5) - vx, dy = r.y(j + 0.5) - vy, d = std::sqrt(dx * dx + dy * dy);
       r.values[j * r.width + i] /= 1. + d / d0;
     }
 }

@@ -61,11 +61,13 @@ inline std::string lowercase_extension(const std::string& file)
 // The whole file, or an exception that tells why not (missing, unreadable, empty).
 inline std::string read_whole_file(const std::string& file)
 {
-  std::ifstream in(file, std::ios::binary);
+  std::ifstream in(file, std::ios::binary | std::ios::ate);
   if(!in) throw file_error(file, std::string("cannot open (") + std::strerror(errno) + ")");
-  std::string s((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if(in.bad()) throw file_error(file, "read error");
-  if(s.empty()) throw file_error(file, "empty file");
+  const std::streamoff size = in.tellg();
+  if(size <= 0) throw file_error(file, "empty file");
+  std::string s(std::size_t(size), '\0');
+  in.seekg(0);
+  if(!in.read(&s[0], size)) throw file_error(file, "read error");
   return s;
 }
 
@@ -76,6 +78,56 @@ inline void check_dimensions(const std::string& file, double w, double h, std::s
     std::snprintf(buf, sizeof buf, "absurd dimensions %.15g x %.15g", w, h);
     throw file_error(file, buf);
   }
+}
+
+/*
+A binary PGM (P5) or PPM (P6), 8 or 16 bits a sample: read here rather than
+by stb_image, whose version 2.27 (Debian 12) takes 16-bit samples as
+little-endian where the format says big-endian.
+*/
+struct Pnm
+{
+  std::size_t width = 0, height = 0, channels = 0;
+  double maxval = 0.;
+  std::vector<std::uint16_t> samples;
+};
+
+inline bool is_pnm(const std::string& bytes)
+{
+  return bytes.size() >= 2 && bytes[0] == 'P' && (bytes[1] == '5' || bytes[1] == '6');
+}
+
+inline Pnm read_pnm(const std::string& file, const std::string& bytes, std::size_t max_pixels)
+{
+  std::size_t at = 2;
+  auto field = [&](const char* name) {
+    while(at < bytes.size() && (std::isspace((unsigned char)bytes[at]) || bytes[at] == '#'))
+      if(bytes[at] == '#') at = bytes.find('\n', at) == std::string::npos ? bytes.size() : bytes.find('\n', at);
+      else ++at;
+    double v = 0.;
+    const std::size_t first = at;
+    for(; at < bytes.size() && std::isdigit((unsigned char)bytes[at]); ++at) v = 10. * v + (bytes[at] - '0');
+    if(at == first) throw file_error(file, std::string("truncated or corrupt PNM header (no ") + name + ")");
+    return v;
+  };
+  Pnm p;
+  p.channels = bytes[1] == '5' ? 1 : 3;
+  const double w = field("width"), h = field("height");
+  p.maxval = field("maxval");
+  check_dimensions(file, w, h, max_pixels);
+  if(p.maxval < 1. || p.maxval > 65535.) throw file_error(file, "PNM maxval must be in [1, 65535]");
+  if(at >= bytes.size() || !std::isspace((unsigned char)bytes[at])) throw file_error(file, "truncated PNM header");
+  ++at;
+  p.width = std::size_t(w);
+  p.height = std::size_t(h);
+  const std::size_t n = p.width * p.height * p.channels, size = p.maxval > 255. ? 2 : 1;
+  if(bytes.size() - at < n * size)
+    throw file_error(file, "truncated: " + std::to_string(bytes.size() - at) + " bytes of pixels, "
+                           + std::to_string(n * size) + " expected");
+  p.samples.resize(n);
+  const unsigned char* d = reinterpret_cast<const unsigned char*>(bytes.data() + at);
+  for(std::size_t k = 0; k < n; ++k) p.samples[k] = size == 2 ? std::uint16_t(d[2 * k] << 8 | d[2 * k + 1]) : d[k];
+  return p;
 }
 
 } // namespace internal
@@ -168,28 +220,36 @@ inline Height_field read_height_image(const std::string& file, std::size_t max_c
 {
   const std::string bytes = internal::read_whole_file(file);
   auto fail = [&](const std::string& why) { return internal::file_error(file, why); };
-  const stbi_uc* data = reinterpret_cast<const stbi_uc*>(bytes.data());
-  const int size = bytes.size() > std::size_t(std::numeric_limits<int>::max()) ? std::numeric_limits<int>::max()
-                                                                                 : int(bytes.size());
-  int w = 0, h = 0, c = 0;
-  if(!stbi_info_from_memory(data, size, &w, &h, &c)) {
-    const char* reason = stbi_failure_reason();
-    throw fail(std::string("cannot read as an image (") + (reason ? reason : "unknown format") + ")");
-  }
-  internal::check_dimensions(file, w, h, max_cells);
-  if(c > 2) throw fail("has " + std::to_string(c) + " colour channels; a height field is a grey image");
-  std::unique_ptr<stbi_us, void (*)(void*)> pixels(stbi_load_16_from_memory(data, size, &w, &h, &c, 1),
-                                                   stbi_image_free);
-  if(!pixels) throw fail(std::string("truncated or corrupt image (") + stbi_failure_reason() + ")");
-  // stb widens 8-bit samples to 16 bits (v * 257): undo it to keep the file's values
-  const double unit = stbi_is_16_bit_from_memory(data, size) ? 1. : 1. / 257.;
   Height_field hf;
-  hf.width = std::size_t(w);
-  hf.height = std::size_t(h);
-  hf.x1 = double(w);
-  hf.y1 = double(h);
-  hf.values.resize(hf.width * hf.height);
-  for(std::size_t k = 0; k < hf.values.size(); ++k) hf.values[k] = pixels.get()[k] * unit;
+  if(internal::is_pnm(bytes)) {
+    internal::Pnm p = internal::read_pnm(file, bytes, max_cells);
+    if(p.channels != 1) throw fail("is a colour PPM; a height field is a grey image");
+    hf.width = p.width;
+    hf.height = p.height;
+    hf.values.assign(p.samples.begin(), p.samples.end());
+  } else {
+    const stbi_uc* data = reinterpret_cast<const stbi_uc*>(bytes.data());
+    const int size = bytes.size() > std::size_t(std::numeric_limits<int>::max()) ? std::numeric_limits<int>::max()
+                                                                                   : int(bytes.size());
+    int w = 0, h = 0, c = 0;
+    if(!stbi_info_from_memory(data, size, &w, &h, &c)) {
+      const char* reason = stbi_failure_reason();
+      throw fail(std::string("cannot read as an image (") + (reason ? reason : "unknown format") + ")");
+    }
+    internal::check_dimensions(file, w, h, max_cells);
+    if(c > 2) throw fail("has " + std::to_string(c) + " colour channels; a height field is a grey image");
+    std::unique_ptr<stbi_us, void (*)(void*)> pixels(stbi_load_16_from_memory(data, size, &w, &h, &c, 1),
+                                                     stbi_image_free);
+    if(!pixels) throw fail(std::string("truncated or corrupt image (") + stbi_failure_reason() + ")");
+    // stb widens 8-bit samples to 16 bits (v * 257): undo it to keep the file's values
+    const double unit = stbi_is_16_bit_from_memory(data, size) ? 1. : 1. / 257.;
+    hf.width = std::size_t(w);
+    hf.height = std::size_t(h);
+    hf.values.resize(hf.width * hf.height);
+    for(std::size_t k = 0; k < hf.values.size(); ++k) hf.values[k] = pixels.get()[k] * unit;
+  }
+  hf.x1 = double(hf.width);
+  hf.y1 = double(hf.height);
   return hf;
 }
 

@@ -46,6 +46,16 @@ inline Rgb_image read_rgb_image(const std::string& file, std::size_t max_pixels 
 {
   const std::string bytes = internal::read_whole_file(file);
   auto fail = [&](const std::string& why) { return internal::file_error(file, why); };
+  Rgb_image img;
+  if(internal::is_pnm(bytes)) {
+    const internal::Pnm p = internal::read_pnm(file, bytes, max_pixels);
+    img.width = p.width;
+    img.height = p.height;
+    img.values.resize(3 * p.width * p.height);
+    for(std::size_t k = 0; k < img.values.size(); ++k)
+      img.values[k] = float(p.samples[p.channels == 3 ? k : k / 3] / p.maxval);
+    return img;
+  }
   const stbi_uc* data = reinterpret_cast<const stbi_uc*>(bytes.data());
   const int size = bytes.size() > std::size_t(std::numeric_limits<int>::max()) ? std::numeric_limits<int>::max()
                                                                                  : int(bytes.size());
@@ -55,7 +65,6 @@ inline Rgb_image read_rgb_image(const std::string& file, std::size_t max_pixels 
     throw fail(std::string("cannot read as an image (") + (reason ? reason : "unknown format") + ")");
   }
   internal::check_dimensions(file, w, h, max_pixels);
-  Rgb_image img;
   img.width = std::size_t(w);
   img.height = std::size_t(h);
   img.values.resize(3 * img.width * img.height);
