@@ -15,7 +15,10 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <array>
+#include <cmath>
 #include <cstddef>
+#include <limits>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -130,47 +133,57 @@ public:
   template <class SamplerTraits, class Lift, class OnVertex>
   void build(const Penrose_importance_sampler<SamplerTraits>& sampler, const Lift& lift, OnVertex on_vertex)
   {
+    constexpr bool visits = !std::is_same<OnVertex, No_vertex_visitor>::value;
     const internal::Penrose::Sampling_context& context = sampler.context();
-    Flat_mesh mesh;
-    internal::Penrose::Base_triangulation_builder builder(context, mesh);
-    builder.build(sampler.expected_number_of_points());
     stats_ = Construction_statistics();
-    const std::size_t n = mesh.x.size();
-    std::vector<char> keep(n, 0);
-    std::vector<internal::Penrose::Placed_sample> placed(n);
-    for(std::size_t v = 0; v < n; ++v) {
-      if(mesh.vertex_face[v] == Flat_mesh::null) continue;  // never entered the mesh
-      ++stats_.base_vertices;
-      keep[v] = builder.kept(Index(v), placed[v]);
-    }
+    Flat_mesh mesh;
+    // where each sample of the region goes; NaN for the vertices to remove
+    std::vector<std::pair<double, double>> target;
+    std::vector<internal::Penrose::Placed_sample> placed;  // for on_vertex only
+    {
+      internal::Penrose::Base_triangulation_builder builder(context, mesh);
+      builder.build(sampler.expected_number_of_points());
+      const double nan = std::numeric_limits<double>::quiet_NaN();
+      target.assign(mesh.x.size(), {nan, nan});
+      if(visits) placed.resize(mesh.x.size());
+      internal::Penrose::Placed_sample s;
+      for(std::size_t v = 0; v < mesh.x.size(); ++v) {
+        if(mesh.vertex_face[v] == Flat_mesh::null) continue;  // never entered the mesh
+        ++stats_.base_vertices;
+        if(!builder.kept(Index(v), s)) continue;
+        target[v] = {s.x, s.y};
+        if(visits) placed[v] = s;
+      }
+    }  // the builder's tiles are freed here
+    const std::size_t n = target.size();
+    auto kept = [&](std::size_t v) { return !std::isnan(target[v].first); };
     const std::array<Index, 3> frame = add_frame(mesh, context);
 
     internal::Penrose::Flat_mesh_editor editor(mesh);
-    std::vector<Index> stuck, unplaced;
+    std::vector<Index> stuck;
     for(std::size_t v = 0; v < n; ++v)
-      if(!keep[v] && mesh.vertex_face[v] != Flat_mesh::null) {
+      if(!kept(v) && mesh.vertex_face[v] != Flat_mesh::null) {
         if(editor.remove_vertex(Index(v))) ++stats_.removed_vertices;
         else stuck.push_back(Index(v));
       }
-    std::vector<std::pair<bool, std::pair<double, double>>> target(n);
-    for(std::size_t v = 0; v < n; ++v)
-      if(keep[v]) target[v] = {placed[v].x != mesh.x[v] || placed[v].y != mesh.y[v], {placed[v].x, placed[v].y}};
-    unplaced = editor.move_vertices(target, stats_.repaired_vertices);
+    const std::vector<Index> unplaced = editor.move_vertices(target, stats_.repaired_vertices);
     stats_.flips = internal::Penrose::make_delaunay(mesh);
 
     std::vector<Vertex_handle> handle = write_tds(mesh, lift);
+    mesh = Flat_mesh();
     for(Index v : stuck) this->remove(handle[v]);
     for(Index w : frame) this->remove(handle[w]);
-    for(Index v : unplaced) handle[v] = this->insert(lift(placed[v].x, placed[v].y));
+    for(Index v : unplaced) handle[v] = this->insert(lift(target[v].first, target[v].second));
     stats_.fallbacks = stuck.size() + unplaced.size();
-    for(std::size_t v = 0; v < n; ++v)
-      if(keep[v] && handle[v] != Vertex_handle()) on_vertex(handle[v], sampler.to_sample(placed[v]));
+    if(visits)
+      for(std::size_t v = 0; v < n; ++v)
+        if(kept(v) && handle[v] != Vertex_handle()) on_vertex(handle[v], sampler.to_sample(placed[v]));
   }
 
   template <class SamplerTraits, class Lift>
   void build(const Penrose_importance_sampler<SamplerTraits>& sampler, const Lift& lift)
   {
-    build(sampler, lift, [](Vertex_handle, const typename Penrose_importance_sampler<SamplerTraits>::Sample&) {});
+    build(sampler, lift, No_vertex_visitor());
   }
 
   /// \name Statistics of the construction
@@ -181,6 +194,11 @@ public:
   /// @}
 
 private:
+  struct No_vertex_visitor
+  {
+    template <class V, class S> void operator()(V, const S&) const {}
+  };
+
   // Three far vertices and the triangles between them and the root tile, so
   // that every vertex of the tile tree is interior.
   static std::array<Index, 3> add_frame(Flat_mesh& m, const internal::Penrose::Sampling_context& c)

@@ -14,6 +14,7 @@
 #include <CGAL/Penrose_Delaunay_triangulation_2/internal/Flat_mesh.h>
 
 #include <array>
+#include <cmath>
 #include <vector>
 
 namespace CGAL {
@@ -58,7 +59,7 @@ public:
     return insert_vertex(v, m_.vertex_face[start]);
   }
 
-  // Moves every vertex v with target[v].first set to it at once. Where a face
+  // Moves every vertex v whose target (x, y) is not NaN there at once. Where a face
   // would fold, its moved vertices go back, until no face folds; those are
   // then moved one at a time with move_vertex(). Returns the vertices that
   // could not be placed (removed from the mesh) and counts the repairs.
@@ -69,9 +70,10 @@ public:
     std::vector<std::pair<double, double>> reference(n);
     std::vector<char> state(n, 0);  // 1: moved, 2: sent back
     for(Index v = 0; v < target.size(); ++v)
-      if(target[v].first && m_.vertex_face[v] != null) {
+      if(!std::isnan(target[v].first) && m_.vertex_face[v] != null &&
+         (target[v].first != m_.x[v] || target[v].second != m_.y[v])) {
         reference[v] = {m_.x[v], m_.y[v]};
-        m_.x[v] = target[v].second.first; m_.y[v] = target[v].second.second;
+        m_.x[v] = target[v].first; m_.y[v] = target[v].second;
         state[v] = 1;
       }
     std::vector<Index> folded, next;
@@ -97,7 +99,7 @@ public:
     for(Index u = 0; u < n; ++u) {
       if(state[u] != 2) continue;
       bool r = false;
-      if(!move_vertex(u, target[u].second.first, target[u].second.second, r)) unplaced.push_back(u);
+      if(!move_vertex(u, target[u].first, target[u].second, r)) unplaced.push_back(u);
       if(r) ++repaired;
     }
     return unplaced;
