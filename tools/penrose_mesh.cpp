@@ -593,6 +593,7 @@ void run(Options o)
   time.write = seconds_since(t0);
   time.total = seconds_since(start);
   if(!o.stats_json.empty()) write_stats(o, in, *sampler, m, sampled, boundary, q.get(), time);
+  bar.finish();
 
   std::cerr << "penrose_mesh: " << sampled << " points";
   if(boundary) std::cerr << " + " << boundary << " on the border";

@@ -28,7 +28,10 @@ public:
     if(isatty(STDERR_FILENO)) thread_ = std::thread([this] { run(); });
   }
 
-  ~Progress_bar()
+  ~Progress_bar() { finish(); }
+
+  // Stops drawing and clears the bar, before the run prints its results.
+  void finish()
   {
     {
       std::lock_guard<std::mutex> lock(mutex_);

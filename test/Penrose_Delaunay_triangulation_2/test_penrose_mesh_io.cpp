@@ -1,0 +1,357 @@
+// Copyright (c) 2026 The Penrose_Delaunay_triangulation_2 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The readers and writers of Penrose_Delaunay_triangulation_2/IO: images and
+// height fields read back what was written (by stb_image_write or by the
+// package), meshes are re-read with CGAL's own OFF, PLY and OBJ readers, and
+// every bad file (missing, empty, truncated, wrong format, absurd dimensions)
+// gives an exception whose message names the file.
+
+#include <CGAL/Penrose_Delaunay_triangulation_2.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/IO/height_field_io.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/IO/read_luminance_image.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/IO/read_rgb_image.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/IO/write_triangulation.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/IO/OBJ.h>
+#include <CGAL/IO/OFF.h>
+#include <CGAL/IO/PLY.h>
+#include <CGAL/Projection_traits_xy_3.h>
+
+#include <stb/stb_image_write.h>
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <fstream>
+#include <functional>
+#include <set>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace {
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+namespace IO = CGAL::IO;
+
+std::string temp(const std::string& name) { return ::testing::TempDir() + "penrose_io_" + name; }
+
+void write_file(const std::string& file, const std::string& bytes)
+{
+  std::ofstream(file, std::ios::binary).write(bytes.data(), std::streamsize(bytes.size()));
+}
+
+std::string read_file(const std::string& file)
+{
+  std::ifstream in(file, std::ios::binary);
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+// `read(file)` must throw a std::runtime_error whose message names the file
+// and contains `why`, on one line.
+void expect_failure(const std::function<void(const std::string&)>& read, const std::string& file,
+                    const std::string& why)
+{
+  try {
+    read(file);
+    ADD_FAILURE() << file << ": no exception, expected '" << why << "'";
+  } catch(const std::runtime_error& e) {
+    const std::string m = e.what();
+    EXPECT_EQ(m.rfind(file + ": ", 0), 0u) << m;
+    EXPECT_NE(m.find(why), std::string::npos) << m << " (expected '" << why << "')";
+    EXPECT_EQ(m.find('\n'), std::string::npos) << m;
+  }
+}
+
+IO::Height_field ramp_field(std::size_t w, std::size_t h)
+{
+  IO::Height_field hf;
+  hf.width = w;
+  hf.height = h;
+  hf.x1 = double(w);
+  hf.y1 = double(h);
+  for(std::size_t j = 0; j < h; ++j)
+    for(std::size_t i = 0; i < w; ++i) hf.values.push_back(double(i * 1000 + j * 7));
+  return hf;
+}
+
+// ---------------------------------------------------------------- height fields
+
+TEST(HeightField, SixteenBitPngAndPgmKeepEveryValue)
+{
+  const IO::Height_field hf = ramp_field(61, 23);
+  for(const char* ext : {"png", "pgm"}) {
+    const std::string file = temp(std::string("field.") + ext);
+    IO::write_height_field(file, hf);
+    const IO::Height_field r = IO::read_height_field(file);
+    ASSERT_EQ(r.width, 61u);
+    ASSERT_EQ(r.height, 23u);
+    EXPECT_EQ(r.values, hf.values) << ext;
+    EXPECT_EQ(r.x0, 0.);
+    EXPECT_EQ(r.x1, 61.);
+    EXPECT_EQ(r.y1, 23.);
+  }
+}
+
+TEST(HeightField, EightBitImagesGiveTheirRawValues)
+{
+  write_file(temp("grey8.pgm"), std::string("P5\n# a comment\n3 1\n255\n", 23) + std::string("\x00\x80\xff", 3));
+  EXPECT_EQ(IO::read_height_field(temp("grey8.pgm")).values, (std::vector<double>{0., 128., 255.}));
+  const unsigned char grey[3] = {0, 128, 255};
+  ASSERT_TRUE(stbi_write_png(temp("grey8.png").c_str(), 3, 1, 1, grey, 3));
+  EXPECT_EQ(IO::read_height_field(temp("grey8.png")).values, (std::vector<double>{0., 128., 255.}));
+}
+
+TEST(HeightField, AsciiGridRoundTripAndGeoreference)
+{
+  IO::Height_field hf = ramp_field(5, 4);
+  hf.values[3] = -12.625;
+  hf.x0 = 1000.5; hf.x1 = 1000.5 + 5 * 30.; hf.y0 = -20.; hf.y1 = -20. + 4 * 30.;
+  IO::write_height_field(temp("grid.asc"), hf);
+  const IO::Height_field r = IO::read_height_field(temp("grid.asc"));
+  EXPECT_EQ(r.values, hf.values);
+  EXPECT_EQ(r.x0, hf.x0);
+  EXPECT_EQ(r.y0, hf.y0);
+  EXPECT_EQ(r.x1, hf.x1);
+  EXPECT_EQ(r.y1, hf.y1);
+}
+
+TEST(HeightField, AsciiGridCentresAndNodata)
+{
+  write_file(temp("nodata.asc"), "NCOLS 3\nNROWS 2\nXLLCENTER 10\nYLLCENTER 20\nCELLSIZE 2\nNODATA_value -9999\n"
+                                 "5 -9999 7\n8 9 -9999\n");
+  const IO::Height_field r = IO::read_height_field(temp("nodata.asc"));
+  EXPECT_EQ(r.values, (std::vector<double>{5, 5, 7, 8, 9, 5}));  // NODATA takes the lowest height
+  EXPECT_EQ(r.x0, 9.);
+  EXPECT_EQ(r.y0, 19.);
+  EXPECT_EQ(r.x1, 15.);
+  EXPECT_EQ(r.y1, 23.);
+}
+
+TEST(HeightField, BadFiles)
+{
+  auto read = [](const std::string& f) { IO::read_height_field(f); };
+  expect_failure(read, temp("missing.png"), "cannot open");
+  expect_failure(read, temp("missing.asc"), "cannot open");
+  write_file(temp("empty.png"), "");
+  expect_failure(read, temp("empty.png"), "empty file");
+  write_file(temp("empty.asc"), "");
+  expect_failure(read, temp("empty.asc"), "empty file");
+  write_file(temp("text.png"), "this is not an image\n");
+  expect_failure(read, temp("text.png"), "cannot read as an image");
+  IO::write_height_field(temp("good.png"), ramp_field(40, 40));
+  write_file(temp("png.asc"), read_file(temp("good.png")));
+  expect_failure(read, temp("png.asc"), "not an ESRI ASCII grid");
+  const std::string png = read_file(temp("good.png"));
+  write_file(temp("truncated.png"), png.substr(0, png.size() / 2));
+  expect_failure(read, temp("truncated.png"), "corrupt");
+  IO::write_height_field(temp("good.pgm"), ramp_field(40, 40));
+  const std::string pgm = read_file(temp("good.pgm"));
+  write_file(temp("truncated.pgm"), pgm.substr(0, pgm.size() - 7));
+  expect_failure(read, temp("truncated.pgm"), "truncated");
+  write_file(temp("header.pgm"), "P5\n40");
+  expect_failure(read, temp("header.pgm"), "PNM header");
+  write_file(temp("huge.pgm"), "P5\n1000000 1000000\n65535\n\x01\x02");
+  expect_failure(read, temp("huge.pgm"), "absurd dimensions 1000000 x 1000000");
+  write_file(temp("zero.pgm"), "P5\n0 5\n255\n");
+  expect_failure(read, temp("zero.pgm"), "absurd dimensions 0 x 5");
+  std::string wide = png;  // the IHDR width, bytes 16 to 19: 2^24 (stb_image's largest)
+  wide[16] = '\x01'; wide[17] = wide[18] = wide[19] = '\0';
+  write_file(temp("huge.png"), wide);
+  expect_failure(read, temp("huge.png"), "absurd dimensions 16777216 x 40");
+  const unsigned char rgb[6] = {1, 2, 3, 4, 5, 6};
+  ASSERT_TRUE(stbi_write_png(temp("colour.png").c_str(), 2, 1, 3, rgb, 6));
+  expect_failure(read, temp("colour.png"), "colour channels");
+
+  write_file(temp("huge.asc"), "ncols 100000000\nnrows 100000000\nxllcorner 0\nyllcorner 0\ncellsize 1\n1 2 3\n");
+  expect_failure(read, temp("huge.asc"), "absurd dimensions");
+  write_file(temp("short.asc"), "ncols 3\nnrows 2\nxllcorner 0\nyllcorner 0\ncellsize 1\n1 2 3 4 5\n");
+  expect_failure(read, temp("short.asc"), "truncated: 5 of 6 values");
+  write_file(temp("word.asc"), "ncols 3\nnrows 2\nxllcorner 0\nyllcorner 0\ncellsize 1\n1 2 x 4 5 6\n");
+  expect_failure(read, temp("word.asc"), "value 3 is not a number");
+  write_file(temp("cell.asc"), "ncols 3\nnrows 2\nxllcorner 0\nyllcorner 0\ncellsize -1\n1 2 3 4 5 6\n");
+  expect_failure(read, temp("cell.asc"), "cellsize must be positive");
+  write_file(temp("corner.asc"), "ncols 3\nnrows 2\ncellsize 1\n1 2 3 4 5 6\n");
+  expect_failure(read, temp("corner.asc"), "xllcorner");
+  write_file(temp("void.asc"), "ncols 2\nnrows 1\nxllcorner 0\nyllcorner 0\ncellsize 1\nnodata_value -1\n-1 -1\n");
+  expect_failure(read, temp("void.asc"), "every cell is NODATA");
+
+  expect_failure([](const std::string& f) { IO::write_height_field(f, ramp_field(2, 2)); },
+                 temp("field.tif"), "unknown height field format");
+  expect_failure([](const std::string& f) { IO::write_height_field(f, ramp_field(2, 2)); },
+                 temp("no/such/dir/field.png"), "cannot write");
+}
+
+// ---------------------------------------------------------------- images
+
+TEST(Image, EightBitPngAndJpg)
+{
+  const unsigned char rgb[2 * 2 * 3] = {255, 0, 0, 0, 255, 0, 0, 0, 255, 10, 20, 30};
+  ASSERT_TRUE(stbi_write_png(temp("rgb.png").c_str(), 2, 2, 3, rgb, 6));
+  const IO::Rgb_image img = IO::read_rgb_image(temp("rgb.png"));
+  ASSERT_EQ(img.width, 2u);
+  ASSERT_EQ(img.height, 2u);
+  EXPECT_FALSE(img.high_dynamic_range);
+  for(int k = 0; k < 12; ++k) EXPECT_FLOAT_EQ(img.values[std::size_t(k)], rgb[k] / 255.f);
+  const IO::Luminance_image lum = IO::read_luminance_image(temp("rgb.png"));
+  EXPECT_NEAR(lum.values[1], 0.7152, 1e-9);  // the green pixel, Rec. 709 weights
+
+  std::vector<unsigned char> grey(16 * 16, 200);
+  ASSERT_TRUE(stbi_write_jpg(temp("grey.jpg").c_str(), 16, 16, 1, grey.data(), 95));
+  const IO::Rgb_image jpg = IO::read_rgb_image(temp("grey.jpg"));
+  ASSERT_EQ(jpg.width, 16u);
+  for(float v : jpg.values) EXPECT_NEAR(v, 200.f / 255.f, 2.f / 255.f);
+  EXPECT_NEAR(IO::read_luminance_image(temp("grey.jpg")).values[0], 200. / 255., 2. / 255.);
+}
+
+TEST(Image, SixteenBitPnmAndGreyToRgb)
+{
+  // one 16-bit PPM pixel (1, 32768, 65535) and one 16-bit PGM pixel 257, big-endian
+  write_file(temp("rgb16.ppm"), std::string("P6\n1 1\n65535\n\x00\x01\x80\x00\xff\xff", 19));
+  const IO::Rgb_image ppm = IO::read_rgb_image(temp("rgb16.ppm"));
+  EXPECT_FLOAT_EQ(ppm.values[0], 1.f / 65535.f);
+  EXPECT_FLOAT_EQ(ppm.values[1], 32768.f / 65535.f);
+  EXPECT_FLOAT_EQ(ppm.values[2], 1.f);
+  write_file(temp("grey16.pgm"), std::string("P5 1 1 65535\n\x01\x01", 15));
+  const IO::Rgb_image pgm = IO::read_rgb_image(temp("grey16.pgm"));
+  for(float v : pgm.values) EXPECT_FLOAT_EQ(v, 257.f / 65535.f);
+  IO::write_PNG_16(temp("grey16.png"), ramp_field(3, 2));
+  const IO::Rgb_image png = IO::read_rgb_image(temp("grey16.png"));
+  EXPECT_FLOAT_EQ(png.values[3 * 2], 2000.f / 65535.f);
+  EXPECT_NEAR(IO::read_luminance_image(temp("grey16.png")).values[2], 2000. / 65535., 1e-12);
+}
+
+TEST(Image, RadianceHdr)
+{
+  const float rgb[3 * 3] = {0.5f, 1.f, 2.f, 100.f, 200.f, 300.f, 0.f, 0.f, 0.f};
+  ASSERT_TRUE(stbi_write_hdr(temp("light.hdr").c_str(), 3, 1, 3, rgb));
+  const IO::Rgb_image img = IO::read_rgb_image(temp("light.hdr"));
+  EXPECT_TRUE(img.high_dynamic_range);
+  for(int k = 0; k < 9; ++k) EXPECT_NEAR(img.values[std::size_t(k)], rgb[k], 0.01 * rgb[k]);  // RGBE: 8-bit mantissas
+  const IO::Luminance_image lum = IO::read_luminance_image(temp("light.hdr"));
+  EXPECT_TRUE(lum.high_dynamic_range);
+  EXPECT_NEAR(lum.values[1], 0.2126 * 100 + 0.7152 * 200 + 0.0722 * 300, 2.);
+}
+
+TEST(Image, BadFiles)
+{
+  auto read = [](const std::string& f) { IO::read_rgb_image(f); };
+  auto read_luminance = [](const std::string& f) { IO::read_luminance_image(f); };
+  expect_failure(read, temp("missing.jpg"), "cannot open");
+  expect_failure(read_luminance, temp("missing.jpg"), "cannot read as an image");
+  write_file(temp("empty.jpg"), "");
+  expect_failure(read, temp("empty.jpg"), "empty file");
+  expect_failure(read_luminance, temp("empty.jpg"), "cannot read as an image");
+  write_file(temp("text.hdr"), "#?RADIANCE\nnot really\n");
+  expect_failure(read, temp("text.hdr"), "cannot read as an image");
+  std::vector<unsigned char> noise(64 * 64 * 3);
+  for(std::size_t k = 0; k < noise.size(); ++k) noise[k] = (unsigned char)(k * 7919 % 251);
+  ASSERT_TRUE(stbi_write_png(temp("noise.png").c_str(), 64, 64, 3, noise.data(), 64 * 3));
+  const std::string png = read_file(temp("noise.png"));
+  write_file(temp("truncated.png"), png.substr(0, png.size() / 2));
+  expect_failure(read, temp("truncated.png"), "corrupt");
+  expect_failure(read_luminance, temp("truncated.png"), "corrupt");
+  write_file(temp("truncated.ppm"), std::string("P6\n4 4\n255\n\x01\x02\x03", 14));
+  expect_failure(read, temp("truncated.ppm"), "truncated: 3 bytes of pixels, 48 expected");
+  write_file(temp("huge.ppm"), "P6\n70000 70000\n255\n\x01");
+  expect_failure(read, temp("huge.ppm"), "absurd dimensions 70000 x 70000");
+  expect_failure([](const std::string& f) { IO::read_rgb_image(f, 100); }, temp("noise.png"), "absurd dimensions 64 x 64");
+  expect_failure([](const std::string& f) { IO::read_luminance_image(f, 100); }, temp("noise.png"), "absurd dimensions");
+}
+
+// ---------------------------------------------------------------- meshes
+
+typedef std::array<std::size_t, 3> Face;
+
+// Re-reads a mesh file with CGAL's reader of its format.
+template <class Point_3>
+bool read_mesh(const std::string& file, std::vector<Point_3>& points, std::vector<std::vector<std::size_t>>& faces)
+{
+  const std::string e = file.substr(file.size() - 3);
+  if(e == "off") return CGAL::IO::read_OFF(file, points, faces);
+  if(e == "ply") return CGAL::IO::read_PLY(file, points, faces);
+  return CGAL::IO::read_OBJ(file, points, faces);
+}
+
+// Writes t in each format with its vertices reversed, re-reads it and checks
+// the order of the vertices, their coordinates, the faces (as vertex sets)
+// and their orientation.
+template <class Triangulation, class Z>
+void check_mesh_files(const Triangulation& t, Z z)
+{
+  std::vector<typename Triangulation::Vertex_handle> order;
+  for(auto v : t.finite_vertex_handles()) order.insert(order.begin(), v);
+  std::set<std::array<double, 6>> expected;  // each face by its corners' x and y, sorted
+  auto key = [](std::array<std::array<double, 2>, 3> c) {
+    std::sort(c.begin(), c.end());
+    return std::array<double, 6>{c[0][0], c[0][1], c[1][0], c[1][1], c[2][0], c[2][1]};
+  };
+  for(auto f : t.finite_face_handles())
+    expected.insert(key({{{f->vertex(0)->point().x(), f->vertex(0)->point().y()},
+                          {f->vertex(1)->point().x(), f->vertex(1)->point().y()},
+                          {f->vertex(2)->point().x(), f->vertex(2)->point().y()}}}));
+  for(const char* ext : {"off", "ply", "obj"}) {
+    const std::string file = temp(std::string("mesh.") + ext);
+    IO::write_triangulation(file, t, order);
+    std::vector<K::Point_3> points;
+    std::vector<std::vector<std::size_t>> faces;
+    ASSERT_TRUE(read_mesh(file, points, faces)) << file;
+    ASSERT_EQ(points.size(), t.number_of_vertices()) << file;
+    ASSERT_EQ(faces.size(), t.number_of_faces()) << file;
+    for(std::size_t k = 0; k < points.size(); ++k) {
+      EXPECT_EQ(points[k].x(), order[k]->point().x()) << file;
+      EXPECT_EQ(points[k].y(), order[k]->point().y()) << file;
+      EXPECT_EQ(points[k].z(), z(order[k]->point())) << file;
+    }
+    std::set<std::array<double, 6>> got;
+    for(const auto& f : faces) {
+      ASSERT_EQ(f.size(), 3u);
+      const K::Point_3 &a = points[f[0]], &b = points[f[1]], &c = points[f[2]];
+      EXPECT_EQ(CGAL::orientation(K::Point_2(a.x(), a.y()), K::Point_2(b.x(), b.y()), K::Point_2(c.x(), c.y())),
+                CGAL::LEFT_TURN) << file;
+      got.insert(key({{{a.x(), a.y()}, {b.x(), b.y()}, {c.x(), c.y()}}}));
+    }
+    EXPECT_EQ(got, expected) << file;
+  }
+}
+
+CGAL::Penrose_importance_sampler<K> radial_sampler(std::size_t n)
+{
+  return CGAL::Penrose_importance_sampler<K>(K::Iso_rectangle_2(0, 0, 1, 1),
+    [](const K::Point_2& p) { return std::exp(-8 * ((p.x() - 0.5) * (p.x() - 0.5) + (p.y() - 0.5) * (p.y() - 0.5))); },
+    CGAL::parameters::number_of_output_points(n));
+}
+
+TEST(Mesh, PlanarTriangulationInEachFormat)
+{
+  const CGAL::Penrose_Delaunay_triangulation_2<K> t(radial_sampler(2000));
+  ASSERT_GT(t.number_of_vertices(), 1500u);
+  check_mesh_files(t, [](const K::Point_2&) { return 0.; });
+}
+
+TEST(Mesh, TerrainKeepsItsHeights)
+{
+  typedef CGAL::Projection_traits_xy_3<K> Gt;
+  auto height = [](double x, double y) { return 100. * std::sin(3 * x) * std::cos(2 * y); };
+  const CGAL::Penrose_Delaunay_triangulation_2<Gt> t(radial_sampler(1000), [&](double x, double y) {
+    return K::Point_3(x, y, height(x, y));
+  });
+  check_mesh_files(t, [&](const K::Point_3& p) { return height(p.x(), p.y()); });
+}
+
+TEST(Mesh, WriterFailures)
+{
+  const CGAL::Penrose_Delaunay_triangulation_2<K> t(radial_sampler(100));
+  auto write = [&](const std::string& f) { IO::write_triangulation(f, t); };
+  expect_failure(write, temp("mesh.stl"), "unknown mesh format");
+  expect_failure(write, temp("no/such/dir/mesh.off"), "cannot write");
+  std::vector<CGAL::Penrose_Delaunay_triangulation_2<K>::Vertex_handle> some;
+  some.push_back(t.finite_vertices_begin());
+  expect_failure([&](const std::string& f) { IO::write_triangulation(f, t, some); }, temp("partial.off"),
+                 "not listed");
+}
+
+} // namespace
