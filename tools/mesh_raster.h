@@ -51,12 +51,12 @@ Plane_mesh grid_mesh(const Raster<T>& r, std::size_t n)
 Calls f(k, face, w) once for each pixel k = j * width + i of the raster whose
 centre lies in a face of the mesh, w holding the barycentric coordinates of
 the centre in that face. A pixel on an edge goes to the first face visited.
-Returns the number of pixels covered.
+`done` becomes the mask of the pixels covered; returns their number.
 */
 template <class T, class F>
-std::size_t for_each_covered_pixel(const Plane_mesh& m, const Raster<T>& r, F&& f)
+std::size_t for_each_covered_pixel(const Plane_mesh& m, const Raster<T>& r, std::vector<char>& done, F&& f)
 {
-  std::vector<char> done(r.width * r.height, 0);
+  done.assign(r.width * r.height, 0);
   std::size_t covered = 0;
   for(std::size_t face = 0; face < m.faces.size(); ++face) {
     double u[3], v[3];
@@ -66,25 +66,35 @@ std::size_t for_each_covered_pixel(const Plane_mesh& m, const Raster<T>& r, F&& 
     }
     const double area = (u[1] - u[0]) * (v[2] - v[0]) - (u[2] - u[0]) * (v[1] - v[0]);
     if(area == 0.) continue;
-    const long i0 = std::max(0L, long(std::ceil(std::min({u[0], u[1], u[2]}) - 0.5)));
-    const long i1 = std::min(long(r.width) - 1, long(std::floor(std::max({u[0], u[1], u[2]}) - 0.5)));
+    // w[e] = A[e] u + B[e] v + C[e]: the area of (p, a, b) over that of the face, (e, a, b) in turn
+    double A[3], B[3], C[3];
+    for(int e = 0; e < 3; ++e) {
+      const int a = (e + 1) % 3, b = (e + 2) % 3;
+      A[e] = (v[a] - v[b]) / area;
+      B[e] = (u[b] - u[a]) / area;
+      C[e] = (u[a] * v[b] - u[b] * v[a]) / area;
+    }
     const long j0 = std::max(0L, long(std::ceil(std::min({v[0], v[1], v[2]}) - 0.5)));
     const long j1 = std::min(long(r.height) - 1, long(std::floor(std::max({v[0], v[1], v[2]}) - 0.5)));
-    for(long j = j0; j <= j1; ++j)
+    for(long j = j0; j <= j1; ++j) {
+      const double pv = j + 0.5;
+      double lo = std::min({u[0], u[1], u[2]}), hi = std::max({u[0], u[1], u[2]});
+      for(int e = 0; e < 3; ++e)  // the span of the row where w[e] >= 0
+        if(A[e] > 0.) lo = std::max(lo, -(B[e] * pv + C[e]) / A[e] - 1e-9);
+        else if(A[e] < 0.) hi = std::min(hi, -(B[e] * pv + C[e]) / A[e] + 1e-9);
+      const long i0 = std::max(0L, long(std::ceil(lo - 0.5))), i1 = std::min(long(r.width) - 1, long(std::floor(hi - 0.5)));
       for(long i = i0; i <= i1; ++i) {
-        const double pu = i + 0.5, pv = j + 0.5;
-        std::array<double, 3> w;  // w[e]: the area of (p, a, b) over that of the face, (e, a, b) in turn
-        for(int e = 0; e < 3; ++e) {
-          const int a = (e + 1) % 3, b = (e + 2) % 3;
-          w[e] = ((u[a] - pu) * (v[b] - pv) - (u[b] - pu) * (v[a] - pv)) / area;
-        }
-        if(w[0] < -1e-12 || w[1] < -1e-12 || w[2] < -1e-12) continue;
+        const double pu = i + 0.5;
+        std::array<double, 3> w;
+        for(int e = 0; e < 3; ++e) w[e] = A[e] * pu + B[e] * pv + C[e];
+        if(w[0] < -1e-9 || w[1] < -1e-9 || w[2] < -1e-9) continue;
         const std::size_t k = std::size_t(j) * r.width + std::size_t(i);
         if(done[k]) continue;
         done[k] = 1;
         ++covered;
         f(k, face, w);
       }
+    }
   }
   return covered;
 }

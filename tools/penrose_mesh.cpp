@@ -364,40 +364,35 @@ penrose_tools::Plane_mesh plane_mesh(const Mesh& m)
   return p;
 }
 
-// The mesh drawn into the pixels of `image`: each pixel is the linear
-// interpolation, over its face, of the image sampled at the face's vertices.
+// The mesh against the raster `image` at the centres of the pixels that it
+// covers (marked in `covered`) and that `mask`, if given, holds: the largest
+// and the RMS difference between the image and its linear interpolation over
+// each face from the image sampled at the face's vertices. That
+// interpolation is drawn into `rendering`, if given.
 template <class T>
-Raster<double> render(const penrose_tools::Plane_mesh& m, const Raster<T>& image, std::vector<char>& covered)
+std::pair<double, double> compare(const penrose_tools::Plane_mesh& m, const Raster<T>& image, std::vector<char>& covered,
+                                  const std::vector<char>* mask, Raster<double>* rendering)
 {
   const std::size_t c = image.channels;
   std::vector<double> at_vertex(c * m.x.size());
   for(std::size_t v = 0; v < m.x.size(); ++v)
     for(std::size_t k = 0; k < c; ++k) at_vertex[c * v + k] = image(m.x[v], m.y[v], k);
-  Raster<double> r = {image.width, image.height, c, std::vector<double>(c * image.width * image.height, 0.),
-                      image.x0, image.y0, image.x1, image.y1};
-  covered.assign(image.width * image.height, 0);
-  penrose_tools::for_each_covered_pixel(m, image, [&](std::size_t p, std::size_t f, const std::array<double, 3>& w) {
-    covered[p] = 1;
-    for(std::size_t k = 0; k < c; ++k)
-      for(int i = 0; i < 3; ++i) r.values[c * p + k] += w[i] * at_vertex[c * m.faces[f][i] + k];
-  });
-  return r;
-}
-
-// Compares a rendering with the raster over the pixels of `mask`: the
-// largest absolute difference and the root mean square difference.
-template <class T>
-std::pair<double, double> difference(const Raster<double>& r, const Raster<T>& image, const std::vector<char>& mask)
-{
+  if(rendering)
+    *rendering = {image.width, image.height, c, std::vector<double>(c * image.width * image.height, 0.),
+                  image.x0, image.y0, image.x1, image.y1};
   double largest = 0., squares = 0.;
   std::size_t n = 0;
-  for(std::size_t p = 0; p < mask.size(); ++p)
-    if(mask[p])
-      for(std::size_t k = 0; k < image.channels; ++k, ++n) {
-        const double e = r.values[image.channels * p + k] - double(image.values[image.channels * p + k]);
-        largest = std::max(largest, std::abs(e));
-        squares += e * e;
-      }
+  penrose_tools::for_each_covered_pixel(m, image, covered, [&](std::size_t p, std::size_t f, const std::array<double, 3>& w) {
+    if(mask && !(*mask)[p]) return;
+    for(std::size_t k = 0; k < c; ++k, ++n) {
+      double value = 0.;
+      for(int i = 0; i < 3; ++i) value += w[i] * at_vertex[c * m.faces[f][i] + k];
+      const double e = value - double(image.values[c * p + k]);
+      largest = std::max(largest, std::abs(e));
+      squares += e * e;
+      if(rendering) rendering->values[c * p + k] = value;
+    }
+  });
   return {largest, n ? std::sqrt(squares / double(n)) : 0.};
 }
 
@@ -409,20 +404,18 @@ struct Quality
 {
   double coverage = 0., max_error = 0., rms_error = 0., grid_max_error = 0., grid_rms_error = 0.;
   std::size_t grid_vertices = 0;
-  Raster<double> rendering;
+  Raster<double> rendering;  // of the mesh, if asked for
 };
 
 template <class T>
-Quality measure(const Mesh& m, const Raster<T>& image)
+Quality measure(const Mesh& m, const Raster<T>& image, bool render)
 {
   Quality q;
   std::vector<char> covered, grid_covered;
-  q.rendering = render(plane_mesh(m), image, covered);
+  std::tie(q.max_error, q.rms_error) = compare(plane_mesh(m), image, covered, nullptr, render ? &q.rendering : nullptr);
   const penrose_tools::Plane_mesh grid = penrose_tools::grid_mesh(image, m.t.number_of_vertices());
   q.grid_vertices = grid.x.size();
-  const Raster<double> grid_rendering = render(grid, image, grid_covered);
-  std::tie(q.max_error, q.rms_error) = difference(q.rendering, image, covered);
-  std::tie(q.grid_max_error, q.grid_rms_error) = difference(grid_rendering, image, covered);
+  std::tie(q.grid_max_error, q.grid_rms_error) = compare(grid, image, grid_covered, &covered, nullptr);
   q.coverage = double(std::count(covered.begin(), covered.end(), 1)) / double(covered.size());
   return q;
 }
@@ -464,7 +457,8 @@ void write_png(const std::string& file, int width, int height, int channels, con
 unsigned char byte(double v) { return (unsigned char)std::lround(255. * std::min(std::max(v, 0.), 1.)); }
 
 // The mesh's edges, 1024 pixels across, over the image, or over the height
-// field in grey levels, lightened so that the edges stand out.
+// field shaded (lit from the north-west, its relief exaggerated to a fifth of
+// the region's width), lightened so that the edges stand out.
 void draw_png(const Options& o, const Input& in, const Mesh& m)
 {
   const double w = o.region[2] - o.region[0], h = o.region[3] - o.region[1];
@@ -476,18 +470,24 @@ void draw_png(const Options& o, const Input& in, const Mesh& m)
   frame.width = std::size_t(pic.width);
   frame.height = std::size_t(pic.height);
   frame.x0 = o.region[0]; frame.y0 = o.region[1]; frame.x1 = o.region[2]; frame.y1 = o.region[3];
-  double lo = 0., hi = 1.;
-  if(!in.heights.values.empty()) {
-    lo = *std::min_element(in.heights.values.begin(), in.heights.values.end());
-    hi = std::max(lo + 1e-300, *std::max_element(in.heights.values.begin(), in.heights.values.end()));
+  const Raster<double>& z = in.heights;
+  double relief = 0.;
+  if(!z.values.empty()) {
+    const auto [lo, hi] = std::minmax_element(z.values.begin(), z.values.end());
+    relief = *hi > *lo ? 0.2 * w / (*hi - *lo) : 0.;
   }
+  const double d = w / 1024., lx = -0.5, ly = 0.5, lz = std::sqrt(0.5);  // light from the north-west, 45 degrees up
   for(int j = 0; j < pic.height; ++j)
     for(int i = 0; i < pic.width; ++i) {
       const double x = frame.x(i + 0.5), y = frame.y(j + 0.5);
       unsigned char* p = &pic.rgb[3 * (std::size_t(j) * std::size_t(pic.width) + std::size_t(i))];
-      for(int c = 0; c < 3; ++c)
-        if(!in.colours.values.empty()) p[c] = byte(0.5 + 0.5 * in.colours(x, y, std::size_t(c)));
-        else if(!in.heights.values.empty()) p[c] = byte(0.4 + 0.6 * (in.heights(x, y) - lo) / (hi - lo));
+      if(!in.colours.values.empty())
+        for(int c = 0; c < 3; ++c) p[c] = byte(0.5 + 0.5 * in.colours(x, y, std::size_t(c)));
+      else if(!z.values.empty()) {
+        const double gx = relief * (z(x + d, y) - z(x - d, y)) / (2 * d), gy = relief * (z(x, y + d) - z(x, y - d)) / (2 * d);
+        const double shade = std::max(0., (-gx * lx - gy * ly + lz) / std::sqrt(gx * gx + gy * gy + 1.));
+        p[0] = p[1] = p[2] = byte(0.45 + 0.55 * shade);
+      }
     }
   const unsigned char colour[3] = {200, 30, 30};
   for(auto e : m.t.finite_edges()) {
@@ -578,8 +578,8 @@ void run(Options o)
   t0 = std::chrono::steady_clock::now();
   std::unique_ptr<Quality> q;
   if(!o.stats_json.empty() || !o.reconstruct.empty()) {
-    if(!in.heights.values.empty()) q = std::make_unique<Quality>(measure(m, in.heights));
-    else if(!in.colours.values.empty()) q = std::make_unique<Quality>(measure(m, in.colours));
+    if(!in.heights.values.empty()) q = std::make_unique<Quality>(measure(m, in.heights, false));
+    else if(!in.colours.values.empty()) q = std::make_unique<Quality>(measure(m, in.colours, !o.reconstruct.empty()));
   }
   time.measure = seconds_since(t0);
 
