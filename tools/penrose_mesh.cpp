@@ -30,7 +30,6 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
 #include <functional>
 #include <iostream>
 #include <limits>
@@ -99,7 +98,9 @@ const char* usage_text =
   "                \"vertices\": ..., \"faces\": ..., \"flips\": ..., \"fallbacks\": ..., ...}; for a\n"
   "                terrain also the vertical \"max_error\" and \"rms_error\" of the mesh and\n"
   "                \"grid_max_error\", \"grid_rms_error\" of the regular grid of as many\n"
-  "                vertices; for an image \"psnr\" and \"grid_psnr\" likewise\n"
+  "                vertices; for an image \"psnr\" and \"grid_psnr\" likewise. The tile tree is\n"
+  "                sampled while the triangulation is derived from it: sample_seconds is the\n"
+  "                sampler's preparation, triangulate_seconds the rest\n"
   "\n"
   "A progress bar is drawn on stderr, when it is a terminal, for runs over a second.\n"
   "\n"
@@ -195,7 +196,6 @@ double seconds_since(std::chrono::steady_clock::time_point t0)
 struct Input
 {
   std::string file;
-  bool high_dynamic_range = false;
   Raster<float> colours;    // 3 channels, display values in [0, 1]; empty unless an image
   Raster<double> heights;   // scaled; empty unless a terrain
   Raster<double> density;   // empty for the built-in densities
@@ -208,7 +208,6 @@ Input read_image(const Options& o)
   Input in;
   in.file = o.density.substr(6);
   CGAL::IO::Rgb_image img = CGAL::IO::read_rgb_image(in.file);
-  in.high_dynamic_range = img.high_dynamic_range;
   in.density.width = in.colours.width = img.width;
   in.density.height = in.colours.height = img.height;
   in.colours.channels = 3;
@@ -252,11 +251,12 @@ Input read_terrain(const Options& o)
   return in;
 }
 
-// Puts the rasters over the region; the viewer is in region coordinates.
-void place(Input& in, const Options& o, double x0, double y0, double x1, double y1)
+// Stretches the rasters over the region; the viewer is in region coordinates.
+void place(Input& in, const Options& o)
 {
-  for(auto* r : {&in.heights, &in.density}) { r->x0 = x0; r->y0 = y0; r->x1 = x1; r->y1 = y1; }
-  in.colours.x0 = x0; in.colours.y0 = y0; in.colours.x1 = x1; in.colours.y1 = y1;
+  const double* r = o.region;
+  for(auto* d : {&in.heights, &in.density}) { d->x0 = r[0]; d->y0 = r[1]; d->x1 = r[2]; d->y1 = r[3]; }
+  in.colours.x0 = r[0]; in.colours.y0 = r[1]; in.colours.x1 = r[2]; in.colours.y1 = r[3];
   if(o.viewer_given) penrose_tools::weight_by_viewer(in.density, o.viewer[0], o.viewer[1]);
 }
 
@@ -553,7 +553,7 @@ void run(Options o)
   }
   if(!(o.region[2] > o.region[0] && o.region[3] > o.region[1]))
     throw std::invalid_argument("the region is empty or degenerate");
-  place(in, o, o.region[0], o.region[1], o.region[2], o.region[3]);
+  place(in, o);
   const K::Iso_rectangle_2 region(o.region[0], o.region[1], o.region[2], o.region[3]);
   const Density d = make_density(o, in, region);
   time.read = seconds_since(start);
