@@ -1,17 +1,16 @@
 // Copyright (c) 2026 The Penrose_Delaunay_triangulation_2 authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Reads an image as a raster of luminance: PNG, JPG, PGM/PPM (8 and 16 bit)
-// and Radiance .hdr through stb_image (Debian's libstb-dev; link with -lstb).
+// Reads an image as a raster of luminance, from the colours that
+// read_rgb_image() reads (PNG, JPG, PGM/PPM 8 and 16 bit, Radiance .hdr).
 
 #ifndef CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_IO_READ_LUMINANCE_IMAGE_H
 #define CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_IO_READ_LUMINANCE_IMAGE_H
 
-#include <stb/stb_image.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/IO/read_rgb_image.h>
 
+#include <algorithm>
 #include <cstddef>
-#include <memory>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -32,46 +31,15 @@ struct Luminance_image
 inline Luminance_image read_luminance_image(const std::string& file,
                                             std::size_t max_pixels = std::size_t(1) << 28)
 {
-  auto fail = [&](const std::string& why) -> std::runtime_error {
-    return std::runtime_error(file + ": " + why);
-  };
-  int w = 0, h = 0, c = 0;
-  if(!stbi_info(file.c_str(), &w, &h, &c)) {
-    const char* reason = stbi_failure_reason();
-    throw fail(std::string("cannot read as an image (") + (reason ? reason : "unknown error") + ")");
-  }
-  if(w <= 0 || h <= 0 || std::size_t(w) * std::size_t(h) > max_pixels)
-    throw fail("absurd dimensions " + std::to_string(w) + " x " + std::to_string(h));
+  const Rgb_image rgb = read_rgb_image(file, max_pixels);
   Luminance_image img;
-  img.width = std::size_t(w);
-  img.height = std::size_t(h);
-  img.values.resize(img.width * img.height);
-  auto luminance = [](const double* v, int channels) {
-    return channels >= 3 ? 0.2126 * v[0] + 0.7152 * v[1] + 0.0722 * v[2] : v[0];
-  };
-  double px[4];
-  if(stbi_is_hdr(file.c_str())) {
-    std::unique_ptr<float, void (*)(void*)> data(stbi_loadf(file.c_str(), &w, &h, &c, 0), stbi_image_free);
-    if(!data) throw fail(std::string("truncated or corrupt HDR image (") + stbi_failure_reason() + ")");
-    img.high_dynamic_range = true;
-    for(std::size_t k = 0; k < img.values.size(); ++k) {
-      for(int i = 0; i < c; ++i) px[i] = data.get()[k * c + i];
-      img.values[k] = luminance(px, c) > 0. ? luminance(px, c) : 0.;
-    }
-  } else if(stbi_is_16_bit(file.c_str())) {
-    std::unique_ptr<unsigned short, void (*)(void*)> data(stbi_load_16(file.c_str(), &w, &h, &c, 0), stbi_image_free);
-    if(!data) throw fail(std::string("truncated or corrupt image (") + stbi_failure_reason() + ")");
-    for(std::size_t k = 0; k < img.values.size(); ++k) {
-      for(int i = 0; i < c; ++i) px[i] = data.get()[k * c + i] / 65535.;
-      img.values[k] = luminance(px, c);
-    }
-  } else {
-    std::unique_ptr<unsigned char, void (*)(void*)> data(stbi_load(file.c_str(), &w, &h, &c, 0), stbi_image_free);
-    if(!data) throw fail(std::string("truncated or corrupt image (") + stbi_failure_reason() + ")");
-    for(std::size_t k = 0; k < img.values.size(); ++k) {
-      for(int i = 0; i < c; ++i) px[i] = data.get()[k * c + i] / 255.;
-      img.values[k] = luminance(px, c);
-    }
+  img.width = rgb.width;
+  img.height = rgb.height;
+  img.high_dynamic_range = rgb.high_dynamic_range;
+  img.values.resize(rgb.width * rgb.height);
+  for(std::size_t k = 0; k < img.values.size(); ++k) {
+    const float* c = &rgb.values[3 * k];
+    img.values[k] = (std::max)(0., 0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2]);
   }
   return img;
 }

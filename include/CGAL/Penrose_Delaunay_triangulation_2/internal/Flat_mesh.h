@@ -138,7 +138,6 @@ public:
     return g;
   }
 
-  std::size_t number_of_free_faces() const { return free_.size(); }
 
 private:
   std::vector<Index> free_;
