@@ -221,7 +221,7 @@ TEST(Image, SixteenBitPnmAndGreyToRgb)
   IO::write_PNG_16(temp("grey16.png"), ramp_field(3, 2));
   const IO::Rgb_image png = IO::read_rgb_image(temp("grey16.png"));
   EXPECT_FLOAT_EQ(png.values[3 * 2], 2000.f / 65535.f);
-  EXPECT_NEAR(IO::read_luminance_image(temp("grey16.png")).values[2], 2000. / 65535., 1e-12);
+  EXPECT_NEAR(IO::read_luminance_image(temp("grey16.png")).values[2], 2000. / 65535., 1e-7);  // float channels
 }
 
 TEST(Image, RadianceHdr)
@@ -241,10 +241,10 @@ TEST(Image, BadFiles)
   auto read = [](const std::string& f) { IO::read_rgb_image(f); };
   auto read_luminance = [](const std::string& f) { IO::read_luminance_image(f); };
   expect_failure(read, temp("missing.jpg"), "cannot open");
-  expect_failure(read_luminance, temp("missing.jpg"), "cannot read as an image");
+  expect_failure(read_luminance, temp("missing.jpg"), "cannot open");
   write_file(temp("empty.jpg"), "");
   expect_failure(read, temp("empty.jpg"), "empty file");
-  expect_failure(read_luminance, temp("empty.jpg"), "cannot read as an image");
+  expect_failure(read_luminance, temp("empty.jpg"), "empty file");
   write_file(temp("text.hdr"), "#?RADIANCE\nnot really\n");
   expect_failure(read, temp("text.hdr"), "cannot read as an image");
   std::vector<unsigned char> noise(64 * 64 * 3);
