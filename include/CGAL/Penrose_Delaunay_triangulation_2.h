@@ -33,21 +33,32 @@ importance-sampled point sets", without locating a single point:
 
 1. the tile tree is built breadth first straight into a triangulation free of
    T-edges (a new vertex on an edge splits the two triangles of that edge);
-2. the vertices that are not samples (inactive, or moved out of the region)
-   are removed, and each hole is filled greedily with exact orientation tests;
-3. the samples are moved by their correction vectors; a vertex whose star
-   would fold is removed and reinserted locally;
-4. Lawson flips, tested with the traits' `side_of_oriented_circle` and its
-   symbolic perturbation, make the triangulation Delaunay. The result is
-   exactly the triangulation that `Delaunay_triangulation_2::insert()` builds
-   from the same points, cocircular points included.
+   a vertex that is neither a sample of the region nor a corner of a tile
+   subdivided further is never created, and the tiles around it stay merged;
+2. the remaining vertices that are not samples (inactive, or moved out of the
+   region) are removed, and each hole is filled greedily with exact
+   orientation tests;
+3. the samples are moved by their correction vectors; where a triangle would
+   fold, its vertices are removed and reinserted locally;
+4. Lawson flips make the triangulation Delaunay. They are decided with CGAL's
+   exact predicates on the points' double coordinates and the symbolic
+   perturbation of `Triangulation_2::side_of_oriented_circle(..., true)`,
+   restated, so the result is exactly the triangulation that
+   `Delaunay_triangulation_2::insert()` builds from the same points,
+   cocircular points included.
 
-Steps 1 to 3 run on a flat mesh, which is written once into the TDS. The
+Steps 1 to 4 run on a flat mesh, which is written once into the TDS. The
 triangulation is framed by three far vertices during the construction so that
 every vertex removed there is interior; the frame is removed last with
 `remove()`. A point that local repair cannot place (for instance one that
 coincides with another) is inserted with `insert()` at the end: such
 fallbacks are counted.
+
+The decisions of steps 1 to 4 are made on the coordinates (x, y) of the
+sampler, so the traits must see the points made by the lift with these
+coordinates (true of every kernel's `Point_2`, and of
+`Projection_traits_xy_3` with a lift to (x, y, z)); their predicates must be
+exact.
 
 It is a `Delaunay_triangulation_2<Gt, Tds>`: every operation of that class
 works on it after construction.
