@@ -80,6 +80,28 @@ inline void check_dimensions(const std::string& file, double w, double h, std::s
   }
 }
 
+// The bytes of an image file as stb_image sees them, its dimensions checked.
+struct Stb_image_bytes
+{
+  const stbi_uc* data;
+  int size;
+  int width = 0, height = 0, channels = 0;
+};
+
+inline Stb_image_bytes stb_image_bytes(const std::string& file, const std::string& bytes, std::size_t max_pixels)
+{
+  Stb_image_bytes b;
+  b.data = reinterpret_cast<const stbi_uc*>(bytes.data());
+  b.size = bytes.size() > std::size_t(std::numeric_limits<int>::max()) ? std::numeric_limits<int>::max()
+                                                                       : int(bytes.size());
+  if(!stbi_info_from_memory(b.data, b.size, &b.width, &b.height, &b.channels)) {
+    const char* reason = stbi_failure_reason();
+    throw file_error(file, std::string("cannot read as an image (") + (reason ? reason : "unknown format") + ")");
+  }
+  check_dimensions(file, b.width, b.height, max_pixels);
+  return b;
+}
+
 /*
 A binary PGM (P5) or PPM (P6), 8 or 16 bits a sample: read here rather than
 by stb_image, whose version 2.27 (Debian 12) takes 16-bit samples as
@@ -228,15 +250,10 @@ inline Height_field read_height_image(const std::string& file, std::size_t max_c
     hf.height = p.height;
     hf.values.assign(p.samples.begin(), p.samples.end());
   } else {
-    const stbi_uc* data = reinterpret_cast<const stbi_uc*>(bytes.data());
-    const int size = bytes.size() > std::size_t(std::numeric_limits<int>::max()) ? std::numeric_limits<int>::max()
-                                                                                   : int(bytes.size());
-    int w = 0, h = 0, c = 0;
-    if(!stbi_info_from_memory(data, size, &w, &h, &c)) {
-      const char* reason = stbi_failure_reason();
-      throw fail(std::string("cannot read as an image (") + (reason ? reason : "unknown format") + ")");
-    }
-    internal::check_dimensions(file, w, h, max_cells);
+    internal::Stb_image_bytes b = internal::stb_image_bytes(file, bytes, max_cells);
+    const stbi_uc* data = b.data;
+    const int size = b.size;
+    int w = b.width, h = b.height, c = b.channels;
     if(c > 2) throw fail("has " + std::to_string(c) + " colour channels; a height field is a grey image");
     std::unique_ptr<stbi_us, void (*)(void*)> pixels(stbi_load_16_from_memory(data, size, &w, &h, &c, 1),
                                                      stbi_image_free);

@@ -56,15 +56,10 @@ inline Rgb_image read_rgb_image(const std::string& file, std::size_t max_pixels 
       img.values[k] = float(p.samples[p.channels == 3 ? k : k / 3] / p.maxval);
     return img;
   }
-  const stbi_uc* data = reinterpret_cast<const stbi_uc*>(bytes.data());
-  const int size = bytes.size() > std::size_t(std::numeric_limits<int>::max()) ? std::numeric_limits<int>::max()
-                                                                                 : int(bytes.size());
-  int w = 0, h = 0, c = 0;
-  if(!stbi_info_from_memory(data, size, &w, &h, &c)) {
-    const char* reason = stbi_failure_reason();
-    throw fail(std::string("cannot read as an image (") + (reason ? reason : "unknown format") + ")");
-  }
-  internal::check_dimensions(file, w, h, max_pixels);
+  internal::Stb_image_bytes b = internal::stb_image_bytes(file, bytes, max_pixels);
+  const stbi_uc* data = b.data;
+  const int size = b.size;
+  int w = b.width, h = b.height, c = b.channels;
   img.width = std::size_t(w);
   img.height = std::size_t(h);
   img.values.resize(3 * img.width * img.height);
