@@ -42,7 +42,6 @@ public:
   // so where its correction takes it.
   struct Vertex_state
   {
-    double importance;
     Sample_birth birth;
     bool is_sample;
     signed char kept;       // -1: not decided yet
@@ -60,7 +59,7 @@ public:
   {
     Vertex_state& s = v_[v];
     if(!s.is_sample || s.kept == 0) return false;
-    const bool k = c_.activate(m_.x[v], m_.y[v], s.importance, s.birth, placed) && c_.contains(placed.x, placed.y);
+    const bool k = c_.activate(m_.x[v], m_.y[v], importance_[v], s.birth, placed) && c_.contains(placed.x, placed.y);
     s.kept = k;
     return k;
   }
@@ -71,21 +70,17 @@ public:
   {
     const std::size_t n = std::size_t(1.25 * expected_points) + 64;
     m_.x.reserve(n); m_.y.reserve(n); m_.vertex_face.reserve(n);
-    v_.reserve(n); needed_.reserve(n);
+    v_.reserve(n); needed_.reserve(n); importance_.reserve(n);
     m_.faces.reserve(2 * n); m_.face_alive.reserve(2 * n);
     face_tile_.assign(2 * n, null);
     frontier_.reserve(n); next_.reserve(n);
     for(int i = 0; i < 3; ++i) add_vertex(c_.root_x(i), c_.root_y(i));
-    Tile root;
-    root.code = 0; root.threshold = 0; root.type = FAT_F; root.direction = 15;
-    root.corners = {{0, 1, 2}};
-    for(int i = 0; i < 3; ++i) { root.x[i] = m_.x[i]; root.y[i] = m_.y[i]; root.importance[i] = v_[i].importance; }
-    root.face = m_.create_face(0, 1, 2);
-    root.refine = refines(root, 0);
-    if(root.refine) frontier_.push_back(root);
+    const Tile root = {0, 0, {{0, 1, 2}}, m_.create_face(0, 1, 2), FAT_F, 15};
+    if(c_.should_refine(0, m_.x.data(), m_.y.data(), importance_.data())) frontier_.push_back(root);
     for(int level = 0; !frontier_.empty(); ++level) {
       if(face_tile_.size() < m_.faces.size()) face_tile_.resize(m_.faces.size() + m_.faces.size() / 2, null);
       for(std::size_t k = 0; k < frontier_.size(); ++k) face_tile_[frontier_[k].face] = Index(k);
+      work_.assign(frontier_.size(), Work());
       next_.clear();
       for(std::size_t k = 0; k < frontier_.size(); ++k) create_vertices(k, level);
       for(std::size_t k = 0; k < frontier_.size(); ++k) create_triangles(k);
@@ -95,19 +90,22 @@ public:
   }
 
 private:
-  // A tile that is to be subdivided, with what its neighbours across each edge
-  // left for it: the vertex they created there, then their triangles along it.
+  // A tile that is to be subdivided.
   struct Tile
   {
     std::uint64_t code, threshold;
     std::array<Index, 3> corners;
-    // the corners' coordinates and importances, carried along as the
-    // depth-first sampler does, so that no vertex is looked up
-    std::array<double, 3> x, y, importance;
     Index face;
     Tile_type type;
     std::uint8_t direction;
-    bool refine;
+  };
+
+  // What the subdivision of a tile of the current level needs besides: its
+  // new vertices and children, and what its neighbours across each edge left
+  // for it (the vertex they created there, then their triangles along it).
+  // Held for one level only, apart from the tiles, to keep them small.
+  struct Work
+  {
     std::array<Index, 2> new_vertices = {{null, null}};
     std::array<Index, 3> child_slot = {{null, null, null}};  // in the next frontier
     std::array<Index, 3> pending_vertex = {{null, null, null}};
@@ -120,19 +118,14 @@ private:
   Index add_vertex(double x, double y)
   {
     const Index v = m_.add_vertex(x, y);
+    importance_.push_back(c_.importance(x, y));
     Vertex_state s;
-    s.importance = c_.importance(x, y);
     s.birth = Sample_birth{0, 0, 0, 0};
     s.is_sample = false;
     s.kept = -1;
     v_.push_back(s);
     needed_.push_back(0);
     return v;
-  }
-
-  bool refines(const Tile& t, int level) const
-  {
-    return c_.should_refine(level, t.x.data(), t.y.data(), t.importance.data());
   }
 
   // The tile still to be subdivided whose face is g, or null.
@@ -145,33 +138,33 @@ private:
   // subdivided (their corners are needed).
   void create_vertices(std::size_t k, int level)
   {
-    Tile& t = frontier_[k];
+    const Tile& t = frontier_[k];
+    Work& w = work_[k];
     const Subdivision_rule& r = rule(t.type);
     const Flat_mesh::Face& face = m_.faces[t.face];
     const int child_level = level + 1;
     std::array<Index, 5> v = {{t.corners[0], t.corners[1], t.corners[2], null, null}};
-    double vx[5] = {t.x[0], t.x[1], t.x[2]}, vy[5] = {t.y[0], t.y[1], t.y[2]};
-    double vi[5] = {t.importance[0], t.importance[1], t.importance[2]};
+    double vx[5], vy[5], vi[5];
+    for(int i = 0; i < 3; ++i) { vx[i] = m_.x[v[i]]; vy[i] = m_.y[v[i]]; vi[i] = importance_[v[i]]; }
     for(int n = 0; n < r.number_of_new_vertices; ++n) {
       const New_vertex_rule& nv = r.new_vertices[n];
       const int a = nv.near_corner, b = nv.far_corner;
       vx[3 + n] = vx[a] + split_fraction * (vx[b] - vx[a]);
       vy[3 + n] = vy[a] + split_fraction * (vy[b] - vy[a]);
-      Index x = t.pending_vertex[nv.edge];
-      if(x != null) vi[3 + n] = v_[x].importance;
-      else {
+      Index x = w.pending_vertex[nv.edge];
+      if(x == null) {
         x = add_vertex(vx[3 + n], vy[3 + n]);
-        vi[3 + n] = v_[x].importance;
         // a tile across that is still to come will split the edge here too
         const Index across = tile_of_face(face.n[face_edge(nv.edge)]);
         if(across != null && across > k) {
           const Index g = face.n[face_edge(nv.edge)];
           const int ge = m_.edge_index(g, t.corners[(nv.edge + 1) % 3], t.corners[nv.edge]);
-          frontier_[across].pending_vertex[(ge + 1) % 3] = x;
+          work_[across].pending_vertex[(ge + 1) % 3] = x;
         }
       }
       v[3 + n] = x;
-      t.new_vertices[n] = x;
+      vi[3 + n] = importance_[x];
+      w.new_vertices[n] = x;
       if(nv.is_sample) {
         Vertex_state& s = v_[x];
         s.is_sample = true;
@@ -183,20 +176,20 @@ private:
     }
     for(int c = 0; c < r.number_of_children; ++c) {
       const Child_rule& cr = r.children[c];
+      double cx[3], cy[3], ci[3];
       Tile child;
+      for(int i = 0; i < 3; ++i) {
+        const int ci_ = cr.corners[i];
+        child.corners[i] = v[ci_]; cx[i] = vx[ci_]; cy[i] = vy[ci_]; ci[i] = vi[ci_];
+      }
+      if(!c_.should_refine(child_level, cx, cy, ci)) continue;
       child.code = t.code * 4 + cr.code_pair;
       child.threshold = t.threshold + pair_weight(cr.code_pair, child_level);
-      for(int i = 0; i < 3; ++i) {
-        const int ci = cr.corners[i];
-        child.corners[i] = v[ci]; child.x[i] = vx[ci]; child.y[i] = vy[ci]; child.importance[i] = vi[ci];
-      }
       child.face = null;
       child.type = cr.type;
       child.direction = add_direction(t.direction, cr.direction_step);
-      child.refine = refines(child, child_level);
-      if(!child.refine) continue;
       for(Index corner : child.corners) needed_[corner] = 1;
-      t.child_slot[c] = Index(next_.size());
+      w.child_slot[c] = Index(next_.size());
       next_.push_back(child);
     }
   }
@@ -212,13 +205,14 @@ private:
   void create_triangles(std::size_t k)
   {
     const Tile& t = frontier_[k];
+    const Work& w = work_[k];
     const Subdivision_rule& r = rule(t.type);
     unsigned mask = 0;
     for(int n = 0; n < r.number_of_new_vertices; ++n)
-      if(present(t.new_vertices[n])) mask |= 1u << n;
+      if(present(w.new_vertices[n])) mask |= 1u << n;
     const Split_pattern& p = split_patterns(t.type, mask);
     const Flat_mesh::Face parent = m_.faces[t.face];
-    const std::array<Index, 5> v = {{t.corners[0], t.corners[1], t.corners[2], t.new_vertices[0], t.new_vertices[1]}};
+    const std::array<Index, 5> v = {{t.corners[0], t.corners[1], t.corners[2], w.new_vertices[0], w.new_vertices[1]}};
 
     std::array<Index, 3> tri;
     for(int f = 0; f < p.number_of_triangles; ++f) {
@@ -229,16 +223,16 @@ private:
     for(int f = 0; f < p.number_of_triangles; ++f)
       for(int j = 0; j < 3; ++j)
         if(p.places[f][j].parent_edge < 0) m_.faces[tri[f]].n[j] = tri[p.places[f][j].triangle];
-    for(int e = 0; e < 3; ++e) connect_parent_edge(t, k, parent, e, p, tri);
+    for(int e = 0; e < 3; ++e) connect_parent_edge(t, w, k, parent, e, p, tri);
     // the children to subdivide next take their triangles
     for(int f = 0; f < p.number_of_triangles; ++f) {
       const int c = p.triangles[f].child;
-      if(c >= 0 && t.child_slot[c] != null) next_[t.child_slot[c]].face = tri[f];
+      if(c >= 0 && w.child_slot[c] != null) next_[w.child_slot[c]].face = tri[f];
     }
-    for(int c = 0; c < 3; ++c) CGAL_assertion(t.child_slot[c] == null || next_[t.child_slot[c]].face != null);
+    for(int c = 0; c < 3; ++c) CGAL_assertion(w.child_slot[c] == null || next_[w.child_slot[c]].face != null);
   }
 
-  void connect_parent_edge(const Tile& t, std::size_t k, const Flat_mesh::Face& parent, int e,
+  void connect_parent_edge(const Tile& t, const Work& w, std::size_t k, const Flat_mesh::Face& parent, int e,
                            const Split_pattern& p, const std::array<Index, 3>& tri)
   {
     const Index a = parent.v[e], b = parent.v[(e + 1) % 3];
@@ -253,9 +247,9 @@ private:
       if(g != null) m_.link(seg[0], seg_edge[0], g, m_.edge_index(g, b, a));
       return;
     }
-    const Index x = t.new_vertices[rule(t.type).new_vertices[0].edge == e ? 0 : 1];
-    if(t.pending_triangles[e][0] != null) {  // the tile across is done: take its triangles
-      const Index f0 = t.pending_triangles[e][0], f1 = t.pending_triangles[e][1];
+    const Index x = w.new_vertices[rule(t.type).new_vertices[0].edge == e ? 0 : 1];
+    if(w.pending_triangles[e][0] != null) {  // the tile across is done: take its triangles
+      const Index f0 = w.pending_triangles[e][0], f1 = w.pending_triangles[e][1];
       m_.link(seg[0], seg_edge[0], f0, m_.edge_index(f0, x, a));
       m_.link(seg[1], seg_edge[1], f1, m_.edge_index(f1, b, x));
       return;
@@ -263,7 +257,7 @@ private:
     if(g == null) return;  // the root's boundary
     if(across != null && across > k) {  // still to come: leave it our triangles
       const int ge = m_.edge_index(g, b, a);
-      frontier_[across].pending_triangles[(ge + 1) % 3] = {{seg[1], seg[0]}};
+      work_[across].pending_triangles[(ge + 1) % 3] = {{seg[1], seg[0]}};
       m_.faces[seg[0]].n[seg_edge[0]] = g;
       m_.faces[seg[1]].n[seg_edge[1]] = g;
       return;
@@ -281,6 +275,8 @@ private:
   std::vector<Vertex_state> v_;
   std::vector<char> needed_;         // a corner of a tile that is subdivided
   std::vector<Tile> frontier_, next_;
+  std::vector<Work> work_;           // for the tiles of frontier_
+  std::vector<double> importance_;   // per vertex, at the nearest point of the region
   Placed_sample scratch_;
   std::vector<Index> face_tile_;     // frontier tile of an intact face, or null
 };
