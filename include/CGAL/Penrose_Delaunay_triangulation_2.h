@@ -180,15 +180,23 @@ public:
     const std::vector<Index> unplaced = editor.move_vertices(target, stats_.repaired_vertices);
     stats_.flips = internal::Penrose::make_delaunay(mesh);
 
+    // keep of the targets only what is still needed, before the TDS grows
+    std::vector<std::pair<double, double>> unplaced_target;
+    for(Index v : unplaced) unplaced_target.push_back(target[v]);
+    std::vector<char> keep;
+    if(visits) for(std::size_t v = 0; v < n; ++v) keep.push_back(kept(v));
+    std::vector<std::pair<double, double>>().swap(target);
+
     std::vector<Vertex_handle> handle = write_tds(mesh, lift);
     mesh = Flat_mesh();
     for(Index v : stuck) this->remove(handle[v]);
     for(Index w : frame) this->remove(handle[w]);
-    for(Index v : unplaced) handle[v] = this->insert(lift(target[v].first, target[v].second));
+    for(std::size_t i = 0; i < unplaced.size(); ++i)
+      handle[unplaced[i]] = this->insert(lift(unplaced_target[i].first, unplaced_target[i].second));
     stats_.fallbacks = stuck.size() + unplaced.size();
     if(visits)
       for(std::size_t v = 0; v < n; ++v)
-        if(kept(v) && handle[v] != Vertex_handle()) on_vertex(handle[v], sampler.to_sample(placed[v]));
+        if(keep[v] && handle[v] != Vertex_handle()) on_vertex(handle[v], sampler.to_sample(placed[v]));
   }
 
   template <class SamplerTraits, class Lift>
@@ -223,16 +231,18 @@ private:
       const double my = 0.5 * (c.root_y(e) + c.root_y((e + 1) % 3)) - cy;
       w[e] = m.add_vertex(cx + 8. * mx, cy + 8. * my);
     }
-    // root corner i is vertex i; which root edge does a boundary edge lie on?
+    // the root edge a boundary edge lies on: the root line nearest to its
+    // midpoint (the other two are a tile size away; no tolerance to tune)
     auto root_edge_of = [&](Index a, Index b) {
+      const double px = 0.5 * (m.x[a] + m.x[b]), py = 0.5 * (m.y[a] + m.y[b]);
+      int best = 0;
+      double best_distance = std::numeric_limits<double>::infinity();
       for(int e = 0; e < 3; ++e) {
         const double ex = c.root_x((e + 1) % 3) - c.root_x(e), ey = c.root_y((e + 1) % 3) - c.root_y(e);
-        const double da = ex * (m.y[a] - c.root_y(e)) - ey * (m.x[a] - c.root_x(e));
-        const double db = ex * (m.y[b] - c.root_y(e)) - ey * (m.x[b] - c.root_x(e));
-        const double tol = 1e-9 * (ex * ex + ey * ey);
-        if(std::abs(da) <= tol && std::abs(db) <= tol) return e;
+        const double d = std::abs(ex * (py - c.root_y(e)) - ey * (px - c.root_x(e))) / std::hypot(ex, ey);
+        if(d < best_distance) { best_distance = d; best = e; }
       }
-      return -1;
+      return best;
     };
     std::vector<std::array<Index, 2>> boundary;  // (face, edge index)
     const std::size_t nf = m.faces.size();
@@ -246,7 +256,6 @@ private:
       const Index f = fe[0]; const int i = int(fe[1]);
       const Index a = m.faces[f].v[Flat_mesh::ccw(i)], b = m.faces[f].v[Flat_mesh::cw(i)];
       const int e = root_edge_of(a, b);
-      CGAL_assertion(e >= 0);
       const Index g = m.create_face(b, a, w[e]);
       m.link(g, 2, f, i);
       outer.push_back({g, a, b});
@@ -268,20 +277,24 @@ private:
     return w;
   }
 
+  // Writes the flat mesh into the TDS; its coordinates are released once the
+  // TDS vertices hold them, so that the two never peak together.
   template <class Lift>
-  std::vector<Vertex_handle> write_tds(const Flat_mesh& m, const Lift& lift)
+  std::vector<Vertex_handle> write_tds(Flat_mesh& m, const Lift& lift)
   {
     Triangulation_data_structure& tds = this->tds();
     tds.clear();
     const Vertex_handle infinite = tds.create_vertex();
     this->set_infinite_vertex(infinite);
     tds.set_dimension(2);
-    std::vector<Vertex_handle> vh(m.x.size());
-    for(std::size_t v = 0; v < m.x.size(); ++v)
+    std::vector<Vertex_handle> vh(m.vertex_face.size());
+    for(std::size_t v = 0; v < vh.size(); ++v)
       if(m.vertex_face[v] != Flat_mesh::null) {
         vh[v] = tds.create_vertex();
         vh[v]->set_point(lift(m.x[v], m.y[v]));
       }
+    std::vector<double>().swap(m.x);
+    std::vector<double>().swap(m.y);
     std::vector<Face_handle> fh(m.faces.size());
     for(std::size_t f = 0; f < m.faces.size(); ++f)
       if(m.face_alive[f]) {
@@ -307,7 +320,7 @@ private:
           bh.second->set_neighbor(1, other.second);
           other.second->set_neighbor(2, bh.second);
         }
-    for(std::size_t v = 0; v < m.x.size(); ++v)
+    for(std::size_t v = 0; v < vh.size(); ++v)
       if(vh[v] != Vertex_handle()) vh[v]->set_face(fh[m.vertex_face[v]]);
     infinite->set_face(hull.front().second);
     return vh;

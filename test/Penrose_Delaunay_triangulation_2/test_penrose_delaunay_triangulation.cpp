@@ -120,6 +120,26 @@ TEST(Triangulation, RandomSmoothDensitiesMatchCgal)
   }
 }
 
+TEST(Triangulation, UnusualRegionsAndDensitiesMatchCgal)
+{
+  auto one = [](const Point&) { return 1.; };
+  expect_same_as_cgal(Sampler(Epick::Iso_rectangle_2(1e12, -1e12, 1e12 + 3, -1e12 + 1), one,
+                              CGAL::parameters::number_of_output_points(3000)), "far from the origin");
+  expect_same_as_cgal(Sampler(Epick::Iso_rectangle_2(0, 0, 1000, 1), one,
+                              CGAL::parameters::number_of_output_points(8000)), "1000:1");
+  expect_same_as_cgal(Sampler(Epick::Iso_rectangle_2(0, 0, 1e-9, 1e-9), one,
+                              CGAL::parameters::number_of_output_points(2000)), "tiny");
+  expect_same_as_cgal(Sampler(Epick::Iso_rectangle_2(-1e100, -1e100, 1e100, 1e100), one,
+                              CGAL::parameters::number_of_output_points(2000)), "huge");
+  expect_same_as_cgal(Sampler(unit_square, [](const Point& p) { return p.x() < 0.5 ? 0. : 1.; },
+                              CGAL::parameters::number_of_output_points(5000)), "step");
+  expect_same_as_cgal(Sampler(unit_square, [](const Point& p) {
+                                const double r2 = (p.x() - .3) * (p.x() - .3) + (p.y() - .7) * (p.y() - .7);
+                                return 1. + 1e4 * std::exp(-r2 / 1e-5); },
+                              CGAL::parameters::number_of_output_points(8000)), "spike");
+  EXPECT_THROW(Sampler(Epick::Iso_rectangle_2(-1e160, -1e160, 1e160, 1e160), one), std::invalid_argument);
+}
+
 TEST(Triangulation, WithoutCorrectionCocircularPointsMatchCgal)
 {
   // raw tile vertices: many collinear and cocircular subsets

@@ -311,8 +311,16 @@ TEST(Sampler, RejectsBadRegionsAndParameters)
   EXPECT_THROW(Sampler(unit_square, [](const Point&) { return 0.; }, CGAL::parameters::number_of_output_points(100)),
                std::invalid_argument);
   EXPECT_THROW(Sampler(unit_square, one, CGAL::parameters::density_control_factor(-1.)), std::invalid_argument);
-  // a density beyond what 30 levels represent
-  EXPECT_THROW(Sampler(unit_square, [](const Point&) { return 1e300; }), std::invalid_argument);
+  // so many points that they would exhaust memory: refused before anything is allocated
+  EXPECT_THROW(Sampler(unit_square, [](const Point&) { return 1e300; }), std::length_error);
+  // a density that needs more than the 30 levels of the tree (the count guard raised)
+  const std::string m = message_of_invalid_argument([] {
+    Sampler s(unit_square, [](const Point& p) { return p.x() < 0.2 ? 1e13 : 1.; },
+              CGAL::parameters::maximum_number(std::size_t(1e13)));
+    std::vector<Point> p;
+    s(std::back_inserter(p));
+  });
+  EXPECT_NE(m.find("levels of the tile tree"), std::string::npos) << m;
 }
 
 TEST(Sampler, MaximumNumberGuardsMemory)

@@ -84,7 +84,7 @@ public:
     root_y_[2] = root_y_[0] + phi * root_scale_ * u.y[17];
     // A sample never moves more than this many scales of the tile it is born in.
     margin_factor_ = (std::max)(1., table_ == nullptr ? 0. : table_->max_length());
-    max_density_ = fibonacci().level_importance[max_level + 1] / importance_per_density_;
+    max_importance_ = fibonacci().level_importance[max_level + 1];
     structural_bits_ = table_ ? table_->structural_bits : default_structural_bits;
     importance_bins_ = table_ ? table_->importance_bins : 21u;
     structural_index_.resize(std::size_t(1) << structural_bits_);
@@ -98,6 +98,9 @@ public:
       throw std::invalid_argument("Penrose_importance_sampler: the region has a non-finite bound");
     if(!(xmax > xmin && ymax > ymin))
       throw std::invalid_argument("Penrose_importance_sampler: the region is empty or degenerate");
+    const double size = (std::max)(xmax - xmin, ymax - ymin);
+    if(!(size * size < 1e300 && size > 1e-150))
+      throw std::invalid_argument("Penrose_importance_sampler: the region's size is out of the range of doubles this sampler supports");
   }
 
   double xmin() const { return xmin_; }
@@ -114,7 +117,12 @@ public:
   // Importance at (x, y), read at the nearest point of the region: the density
   // is never evaluated outside the region, and tiles that straddle its border
   // see the density inside it.
-  double importance(double x, double y) const { return density(x, y) * importance_per_density_; }
+  double importance(double x, double y) const
+  {
+    const double i = density(x, y) * importance_per_density_;
+    if(!(i < max_importance_)) throw_too_dense(x, y, i / importance_per_density_);
+    return i;
+  }
 
   // The unscaled density, checked, at the nearest point of the region.
   double density(double x, double y) const
@@ -184,20 +192,21 @@ public:
 
   double checked(double v, double x, double y) const
   {
-    if(v >= 0. && v < max_density_) return v;
-    throw_bad_density(v, x, y);
+    if(v >= 0. && v < std::numeric_limits<double>::infinity()) return v;
+    std::ostringstream msg;
+    msg.precision(17);
+    msg << "Penrose_importance_sampler: the density at (" << x << ", " << y << ") is " << v
+        << "; it must be finite and non-negative";
+    throw std::invalid_argument(msg.str());
   }
 
 private:
-  [[noreturn]] void throw_bad_density(double v, double x, double y) const
+  [[noreturn]] void throw_too_dense(double x, double y, double v) const
   {
     std::ostringstream msg;
     msg.precision(17);
-    msg << "Penrose_importance_sampler: the density at (" << x << ", " << y << ") is " << v;
-    if(v >= 0. && v < std::numeric_limits<double>::infinity())
-      msg << ", more than the " << max_level << " levels of the tile tree can represent";
-    else
-      msg << "; it must be finite and non-negative";
+    msg << "Penrose_importance_sampler: the density at (" << x << ", " << y << ") is " << v
+        << ", more than the " << max_level << " levels of the tile tree can represent";
     throw std::invalid_argument(msg.str());
   }
 
@@ -211,7 +220,7 @@ private:
   double root_scale_;
   double importance_per_density_;
   double margin_factor_;
-  double max_density_;  // beyond it the importance needs more than max_level levels
+  double max_importance_;  // beyond it the importance needs more than max_level levels
   int structural_bits_;
   unsigned importance_bins_;
   std::vector<unsigned> structural_index_;  // Fibonacci value of every low code
