@@ -193,6 +193,13 @@ public:
   double checked(double v, double x, double y) const
   {
     if(v >= 0. && v < std::numeric_limits<double>::infinity()) return v;
+    throw_bad_density(x, y, v);
+  }
+
+private:
+  // the messages are built out of line, to keep the checks of the hot path small
+  [[noreturn]] static void throw_bad_density(double x, double y, double v)
+  {
     std::ostringstream msg;
     msg.precision(17);
     msg << "Penrose_importance_sampler: the density at (" << x << ", " << y << ") is " << v
@@ -200,7 +207,6 @@ public:
     throw std::invalid_argument(msg.str());
   }
 
-private:
   [[noreturn]] void throw_too_dense(double x, double y, double v) const
   {
     std::ostringstream msg;
