@@ -150,22 +150,17 @@ public:
     Flat_mesh mesh;
     // where each sample of the region goes; NaN for the vertices to remove
     std::vector<std::pair<double, double>> target;
-    std::vector<internal::Penrose::Placed_sample> placed;  // for on_vertex only
+    std::vector<std::pair<Index, internal::Penrose::Placed_sample>> placed;  // for on_vertex only
     {
       internal::Penrose::Base_triangulation_builder builder(context, mesh);
       builder.build(sampler.expected_number_of_points());
-      const double nan = std::numeric_limits<double>::quiet_NaN();
-      target.assign(mesh.x.size(), {nan, nan});
-      if(visits) placed.resize(mesh.x.size());
-      internal::Penrose::Placed_sample s;
-      for(std::size_t v = 0; v < mesh.x.size(); ++v) {
-        if(mesh.vertex_face[v] == Flat_mesh::null) continue;  // never entered the mesh
-        ++stats_.base_vertices;
-        if(!builder.kept(Index(v), s)) continue;
-        target[v] = {s.x, s.y};
-        if(visits) placed[v] = s;
-      }
+      target = builder.take_targets();
+      if(visits)
+        for(Index v = 0; v < target.size(); ++v)
+          if(!std::isnan(target[v].first)) placed.emplace_back(v, builder.sample(v));
     }  // the builder's tiles are freed here
+    for(std::size_t v = 0; v < mesh.x.size(); ++v)
+      if(mesh.vertex_face[v] != Flat_mesh::null) ++stats_.base_vertices;
     const std::size_t n = target.size();
     auto kept = [&](std::size_t v) { return !std::isnan(target[v].first); };
     const std::array<Index, 3> frame = add_frame(mesh, context);
@@ -183,8 +178,6 @@ public:
     // keep of the targets only what is still needed, before the TDS grows
     std::vector<std::pair<double, double>> unplaced_target;
     for(Index v : unplaced) unplaced_target.push_back(target[v]);
-    std::vector<char> keep;
-    if(visits) for(std::size_t v = 0; v < n; ++v) keep.push_back(kept(v));
     std::vector<std::pair<double, double>>().swap(target);
 
     std::vector<Vertex_handle> handle = write_tds(mesh, lift);
@@ -194,9 +187,8 @@ public:
     for(std::size_t i = 0; i < unplaced.size(); ++i)
       handle[unplaced[i]] = this->insert(lift(unplaced_target[i].first, unplaced_target[i].second));
     stats_.fallbacks = stuck.size() + unplaced.size();
-    if(visits)
-      for(std::size_t v = 0; v < n; ++v)
-        if(keep[v] && handle[v] != Vertex_handle()) on_vertex(handle[v], sampler.to_sample(placed[v]));
+    for(const auto& vp : placed)
+      if(handle[vp.first] != Vertex_handle()) on_vertex(handle[vp.first], sampler.to_sample(vp.second));
   }
 
   template <class SamplerTraits, class Lift>

@@ -26,6 +26,7 @@
 #include <array>
 #include <cstdint>
 #include <limits>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -53,15 +54,22 @@ public:
 
   const std::vector<Vertex_state>& vertices() const { return v_; }
 
-  // Whether v is an active sample whose corrected position is in the region;
-  // `placed` receives the sample when it is.
-  bool kept(Index v, Placed_sample& placed)
+  // Where each vertex of the mesh goes: its corrected position if it is an
+  // active sample that lands in the region, NaN otherwise (to be removed).
+  // Each sample is activated once, during the build or here.
+  std::vector<std::pair<double, double>> take_targets()
   {
-    Vertex_state& s = v_[v];
-    if(!s.is_sample || s.kept == 0) return false;
-    const bool k = c_.activate(m_.x[v], m_.y[v], importance_[v], s.birth, placed) && c_.contains(placed.x, placed.y);
-    s.kept = k;
-    return k;
+    for(Index v = 0; v < v_.size(); ++v)
+      if(m_.vertex_face[v] != null && v_[v].kept < 0) decide(v);
+    return std::move(target_);
+  }
+
+  // The sample at kept vertex v, with the data of its leaf tile.
+  Placed_sample sample(Index v) const
+  {
+    Placed_sample s;
+    c_.activate(m_.x[v], m_.y[v], importance_[v], v_[v].birth, s);
+    return s;
   }
 
   // `expected_points` sizes the arrays once: growing them level after level
@@ -70,7 +78,7 @@ public:
   {
     const std::size_t n = std::size_t(1.25 * expected_points) + 64;
     m_.x.reserve(n); m_.y.reserve(n); m_.vertex_face.reserve(n);
-    v_.reserve(n); needed_.reserve(n); importance_.reserve(n);
+    v_.reserve(n); needed_.reserve(n); importance_.reserve(n); target_.reserve(n);
     m_.faces.reserve(2 * n); m_.face_alive.reserve(2 * n);
     face_tile_.assign(2 * n, null);
     frontier_.reserve(n); next_.reserve(n);
@@ -125,6 +133,7 @@ private:
     s.kept = -1;
     v_.push_back(s);
     needed_.push_back(0);
+    target_.emplace_back(std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN());
     return v;
   }
 
@@ -197,8 +206,17 @@ private:
   bool present(Index x)
   {
     if(needed_[x]) return true;
-    if(v_[x].kept < 0) kept(x, scratch_);
+    if(v_[x].kept < 0) decide(x);
     return v_[x].kept > 0;
+  }
+
+  // Whether x is an active sample whose corrected position is in the region.
+  void decide(Index x)
+  {
+    Vertex_state& s = v_[x];
+    s.kept = s.is_sample && c_.activate(m_.x[x], m_.y[x], importance_[x], s.birth, scratch_)
+             && c_.contains(scratch_.x, scratch_.y);
+    if(s.kept) target_[x] = {scratch_.x, scratch_.y};
   }
 
   // Phase 2: the triangles of the tile, and their links across its edges.
@@ -277,6 +295,7 @@ private:
   std::vector<Tile> frontier_, next_;
   std::vector<Work> work_;           // for the tiles of frontier_
   std::vector<double> importance_;   // per vertex, at the nearest point of the region
+  std::vector<std::pair<double, double>> target_;  // see take_targets()
   Placed_sample scratch_;
   std::vector<Index> face_tile_;     // frontier tile of an intact face, or null
 };
