@@ -152,7 +152,7 @@ public:
     std::vector<std::pair<double, double>> target;
     std::vector<std::pair<Index, internal::Penrose::Placed_sample>> placed;  // for on_vertex only
     {
-      internal::Penrose::Base_triangulation_builder builder(context, mesh);
+      internal::Penrose::Base_triangulation_builder builder(context, mesh, visits);
       builder.build(sampler.expected_number_of_points());
       target = builder.take_targets();
       if(visits)

@@ -39,36 +39,22 @@ public:
   typedef Flat_mesh::Index Index;
   static constexpr Index null = Flat_mesh::null;
 
-  // Per vertex, after build(): whether it is a sample of the region, and if
-  // so where its correction takes it.
-  struct Vertex_state
-  {
-    Sample_birth birth;
-    bool is_sample;
-    signed char kept;       // -1: not decided yet
-  };
-
-  Base_triangulation_builder(const Sampling_context& context, Flat_mesh& mesh)
-    : c_(context), m_(mesh)
+  // `record_births`: keep what sample() needs (for vertex visitors only).
+  Base_triangulation_builder(const Sampling_context& context, Flat_mesh& mesh, bool record_births = false)
+    : c_(context), m_(mesh), record_births_(record_births)
   {}
-
-  const std::vector<Vertex_state>& vertices() const { return v_; }
 
   // Where each vertex of the mesh goes: its corrected position if it is an
   // active sample that lands in the region, NaN otherwise (to be removed).
-  // Each sample is activated once, during the build or here.
-  std::vector<std::pair<double, double>> take_targets()
-  {
-    for(Index v = 0; v < v_.size(); ++v)
-      if(m_.vertex_face[v] != null && v_[v].kept < 0) decide(v);
-    return std::move(target_);
-  }
+  std::vector<std::pair<double, double>> take_targets() { return std::move(target_); }
 
-  // The sample at kept vertex v, with the data of its leaf tile.
+  // The sample at kept vertex v, with the data of its leaf tile; needs
+  // `record_births`.
   Placed_sample sample(Index v) const
   {
+    CGAL_precondition(record_births_);
     Placed_sample s;
-    c_.activate(m_.x[v], m_.y[v], importance_[v], v_[v].birth, s);
+    c_.activate(m_.x[v], m_.y[v], importance_[v], birth_[v], s);
     return s;
   }
 
@@ -78,12 +64,13 @@ public:
   {
     const std::size_t n = std::size_t(1.25 * expected_points) + 64;
     m_.x.reserve(n); m_.y.reserve(n); m_.vertex_face.reserve(n);
-    v_.reserve(n); needed_.reserve(n); importance_.reserve(n); target_.reserve(n);
+    flags_.reserve(n); importance_.reserve(n); target_.reserve(n);
+    if(record_births_) birth_.reserve(n);
     m_.faces.reserve(2 * n); m_.face_alive.reserve(2 * n);
     face_tile_.assign(2 * n, null);
     frontier_.reserve(n); next_.reserve(n);
     for(int i = 0; i < 3; ++i) add_vertex(c_.root_x(i), c_.root_y(i));
-    const Tile root = {0, 0, {{0, 1, 2}}, m_.create_face(0, 1, 2), FAT_F, 15};
+    const Tile root = {0, 0, {{0, 1, 2}}, m_.create_face(0, 1, 2), FAT_F, 15, 0};
     if(c_.should_refine(0, m_.x.data(), m_.y.data(), importance_.data())) frontier_.push_back(root);
     for(int level = 0; !frontier_.empty(); ++level) {
       if(face_tile_.size() < m_.faces.size()) face_tile_.resize(m_.faces.size() + m_.faces.size() / 2, null);
@@ -106,19 +93,30 @@ private:
     Index face;
     Tile_type type;
     std::uint8_t direction;
+    std::uint8_t refined_children;  // bit c: child c is in the next frontier
   };
 
-  // What the subdivision of a tile of the current level needs besides: its
-  // new vertices and children, and what its neighbours across each edge left
-  // for it (the vertex they created there, then their triangles along it).
-  // Held for one level only, apart from the tiles, to keep them small.
+  // What the subdivision of a tile of the current level needs besides, per
+  // new vertex n: the vertex, and the triangles that the neighbour across its
+  // edge left along that edge, if it came first. Held for one level only,
+  // apart from the tiles, to keep them small.
   struct Work
   {
     std::array<Index, 2> new_vertices = {{null, null}};
-    std::array<Index, 3> child_slot = {{null, null, null}};  // in the next frontier
-    std::array<Index, 3> pending_vertex = {{null, null, null}};
-    std::array<std::array<Index, 2>, 3> pending_triangles = {{{{null, null}}, {{null, null}}, {{null, null}}}};
+    std::array<std::array<Index, 2>, 2> pending_triangles = {{{{null, null}}, {{null, null}}}};
+    Index first_child = null;  // in the next frontier; the others follow
   };
+
+  enum Vertex_flag : std::uint8_t { NEEDED = 1, KEPT = 2 };
+
+  // The new vertex of a tile of type t on its edge e, or -1.
+  static int new_vertex_on_edge(Tile_type t, int e)
+  {
+    const Subdivision_rule& r = rule(t);
+    for(int n = 0; n < r.number_of_new_vertices; ++n)
+      if(r.new_vertices[n].edge == e) return n;
+    return -1;
+  }
 
   // tile edge e (corner e to corner e + 1) is the face edge opposite corner e + 2
   static int face_edge(int e) { return (e + 2) % 3; }
@@ -127,13 +125,9 @@ private:
   {
     const Index v = m_.add_vertex(x, y);
     importance_.push_back(c_.importance(x, y));
-    Vertex_state s;
-    s.birth = Sample_birth{0, 0, 0, 0};
-    s.is_sample = false;
-    s.kept = -1;
-    v_.push_back(s);
-    needed_.push_back(0);
+    flags_.push_back(0);
     target_.emplace_back(std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN());
+    if(record_births_) birth_.push_back(Sample_birth{0, 0, 0, 0});
     return v;
   }
 
@@ -160,29 +154,24 @@ private:
       const int a = nv.near_corner, b = nv.far_corner;
       vx[3 + n] = vx[a] + split_fraction * (vx[b] - vx[a]);
       vy[3 + n] = vy[a] + split_fraction * (vy[b] - vy[a]);
-      Index x = w.pending_vertex[nv.edge];
+      Index x = w.new_vertices[n];
       if(x == null) {
         x = add_vertex(vx[3 + n], vy[3 + n]);
-        // a tile across that is still to come will split the edge here too
-        const Index across = tile_of_face(face.n[face_edge(nv.edge)]);
-        if(across != null && across > k) {
-          const Index g = face.n[face_edge(nv.edge)];
-          const int ge = m_.edge_index(g, t.corners[(nv.edge + 1) % 3], t.corners[nv.edge]);
-          work_[across].pending_vertex[(ge + 1) % 3] = x;
-        }
+        w.new_vertices[n] = x;
+        // a tile across that is still to come splits the edge here too
+        const Index g = face.n[face_edge(nv.edge)];
+        const Index across = tile_of_face(g);
+        if(across != null && across > k) work_[across].new_vertices[slot_across(g, t, nv.edge)] = x;
       }
       v[3 + n] = x;
       vi[3 + n] = importance_[x];
-      w.new_vertices[n] = x;
-      if(nv.is_sample) {
-        Vertex_state& s = v_[x];
-        s.is_sample = true;
-        s.birth = Sample_birth{ t.code * 4 + r.sample_code_pair,
+      if(nv.is_sample)
+        decide(x, Sample_birth{ t.code * 4 + r.sample_code_pair,
                                 t.threshold + pair_weight(r.sample_code_pair, child_level),
                                 static_cast<std::uint8_t>(child_level),
-                                add_direction(t.direction, r.sample_direction_step) };
-      }
+                                add_direction(t.direction, r.sample_direction_step) });
     }
+    w.first_child = Index(next_.size());
     for(int c = 0; c < r.number_of_children; ++c) {
       const Child_rule& cr = r.children[c];
       double cx[3], cy[3], ci[3];
@@ -197,26 +186,42 @@ private:
       child.face = null;
       child.type = cr.type;
       child.direction = add_direction(t.direction, cr.direction_step);
-      for(Index corner : child.corners) needed_[corner] = 1;
-      w.child_slot[c] = Index(next_.size());
+      child.refined_children = 0;
+      for(Index corner : child.corners) flags_[corner] |= NEEDED;
+      frontier_[k].refined_children |= std::uint8_t(1u << c);
       next_.push_back(child);
     }
   }
 
-  bool present(Index x)
+  // How many children of t before child c are in the next frontier.
+  static Index refined_before(const Tile& t, int c)
   {
-    if(needed_[x]) return true;
-    if(v_[x].kept < 0) decide(x);
-    return v_[x].kept > 0;
+    Index count = 0;
+    for(int d = 0; d < c; ++d) count += (t.refined_children >> d) & 1u;
+    return count;
   }
 
-  // Whether x is an active sample whose corrected position is in the region.
-  void decide(Index x)
+  // The new vertex slot, in the tile across the edge e of tile t (face g),
+  // of the vertex that splits that edge.
+  int slot_across(Index g, const Tile& t, int e) const
   {
-    Vertex_state& s = v_[x];
-    s.kept = s.is_sample && c_.activate(m_.x[x], m_.y[x], importance_[x], s.birth, scratch_)
-             && c_.contains(scratch_.x, scratch_.y);
-    if(s.kept) target_[x] = {scratch_.x, scratch_.y};
+    const int ge = m_.edge_index(g, t.corners[(e + 1) % 3], t.corners[e]);
+    const int n = new_vertex_on_edge(frontier_[face_tile_[g]].type, (ge + 1) % 3);
+    CGAL_assertion(n >= 0);
+    return n;
+  }
+
+  // Whether x, born as a sample, is active and its corrected position is in
+  // the region; decided at once, so that no birth data is held.
+  void decide(Index x, const Sample_birth& birth)
+  {
+    if(record_births_) birth_[x] = birth;
+    const bool kept = c_.activate(m_.x[x], m_.y[x], importance_[x], birth, scratch_)
+                      && c_.contains(scratch_.x, scratch_.y);
+    if(kept) {
+      flags_[x] |= KEPT;
+      target_[x] = {scratch_.x, scratch_.y};
+    }
   }
 
   // Phase 2: the triangles of the tile, and their links across its edges.
@@ -227,7 +232,7 @@ private:
     const Subdivision_rule& r = rule(t.type);
     unsigned mask = 0;
     for(int n = 0; n < r.number_of_new_vertices; ++n)
-      if(present(w.new_vertices[n])) mask |= 1u << n;
+      if(flags_[w.new_vertices[n]] != 0) mask |= 1u << n;
     const Split_pattern& p = split_patterns(t.type, mask);
     const Flat_mesh::Face parent = m_.faces[t.face];
     const std::array<Index, 5> v = {{t.corners[0], t.corners[1], t.corners[2], w.new_vertices[0], w.new_vertices[1]}};
@@ -245,9 +250,9 @@ private:
     // the children to subdivide next take their triangles
     for(int f = 0; f < p.number_of_triangles; ++f) {
       const int c = p.triangles[f].child;
-      if(c >= 0 && w.child_slot[c] != null) next_[w.child_slot[c]].face = tri[f];
+      if(c >= 0 && (t.refined_children >> c & 1u))
+        next_[w.first_child + refined_before(t, c)].face = tri[f];
     }
-    for(int c = 0; c < 3; ++c) CGAL_assertion(w.child_slot[c] == null || next_[w.child_slot[c]].face != null);
   }
 
   void connect_parent_edge(const Tile& t, const Work& w, std::size_t k, const Flat_mesh::Face& parent, int e,
@@ -265,17 +270,17 @@ private:
       if(g != null) m_.link(seg[0], seg_edge[0], g, m_.edge_index(g, b, a));
       return;
     }
-    const Index x = w.new_vertices[rule(t.type).new_vertices[0].edge == e ? 0 : 1];
-    if(w.pending_triangles[e][0] != null) {  // the tile across is done: take its triangles
-      const Index f0 = w.pending_triangles[e][0], f1 = w.pending_triangles[e][1];
+    const int n = new_vertex_on_edge(t.type, e);
+    const Index x = w.new_vertices[n];
+    if(w.pending_triangles[n][0] != null) {  // the tile across is done: take its triangles
+      const Index f0 = w.pending_triangles[n][0], f1 = w.pending_triangles[n][1];
       m_.link(seg[0], seg_edge[0], f0, m_.edge_index(f0, x, a));
       m_.link(seg[1], seg_edge[1], f1, m_.edge_index(f1, b, x));
       return;
     }
     if(g == null) return;  // the root's boundary
     if(across != null && across > k) {  // still to come: leave it our triangles
-      const int ge = m_.edge_index(g, b, a);
-      work_[across].pending_triangles[(ge + 1) % 3] = {{seg[1], seg[0]}};
+      work_[across].pending_triangles[slot_across(g, t, e)] = {{seg[1], seg[0]}};
       m_.faces[seg[0]].n[seg_edge[0]] = g;
       m_.faces[seg[1]].n[seg_edge[1]] = g;
       return;
@@ -290,8 +295,9 @@ private:
 
   const Sampling_context& c_;
   Flat_mesh& m_;
-  std::vector<Vertex_state> v_;
-  std::vector<char> needed_;         // a corner of a tile that is subdivided
+  const bool record_births_;
+  std::vector<std::uint8_t> flags_;  // Vertex_flag: in the mesh if either is set
+  std::vector<Sample_birth> birth_;  // with record_births_ only
   std::vector<Tile> frontier_, next_;
   std::vector<Work> work_;           // for the tiles of frontier_
   std::vector<double> importance_;   // per vertex, at the nearest point of the region
