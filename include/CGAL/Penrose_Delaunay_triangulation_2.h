@@ -159,7 +159,7 @@ public:
         for(Index v = 0; v < target.size(); ++v)
           if(!std::isnan(target[v].first)) placed.emplace_back(v, builder.sample(v));
     }  // the builder's tiles are freed here
-    for(std::size_t v = 0; v < mesh.x.size(); ++v)
+    for(std::size_t v = 0; v < mesh.points.size(); ++v)
       if(mesh.vertex_face[v] != Flat_mesh::null) ++stats_.base_vertices;
     const std::size_t n = target.size();
     auto kept = [&](std::size_t v) { return !std::isnan(target[v].first); };
@@ -226,7 +226,7 @@ private:
     // the root edge a boundary edge lies on: the root line nearest to its
     // midpoint (the other two are a tile size away; no tolerance to tune)
     auto root_edge_of = [&](Index a, Index b) {
-      const double px = 0.5 * (m.x[a] + m.x[b]), py = 0.5 * (m.y[a] + m.y[b]);
+      const double px = 0.5 * (m.points[a].x() + m.points[b].x()), py = 0.5 * (m.points[a].y() + m.points[b].y());
       int best = 0;
       double best_distance = std::numeric_limits<double>::infinity();
       for(int e = 0; e < 3; ++e) {
@@ -283,10 +283,9 @@ private:
     for(std::size_t v = 0; v < vh.size(); ++v)
       if(m.vertex_face[v] != Flat_mesh::null) {
         vh[v] = tds.create_vertex();
-        vh[v]->set_point(lift(m.x[v], m.y[v]));
+        vh[v]->set_point(lift(m.points[v].x(), m.points[v].y()));
       }
-    std::vector<double>().swap(m.x);
-    std::vector<double>().swap(m.y);
+    std::vector<Flat_mesh::Point>().swap(m.points);
     std::vector<Face_handle> fh(m.faces.size());
     for(std::size_t f = 0; f < m.faces.size(); ++f)
       if(m.face_alive[f]) {

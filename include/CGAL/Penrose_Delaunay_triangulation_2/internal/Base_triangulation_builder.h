@@ -54,7 +54,7 @@ public:
   {
     CGAL_precondition(record_births_);
     Placed_sample s;
-    c_.activate(m_.x[v], m_.y[v], importance_[v], birth_[v], s);
+    c_.activate(m_.points[v].x(), m_.points[v].y(), importance_[v], birth_[v], s);
     return s;
   }
 
@@ -63,7 +63,7 @@ public:
   void build(double expected_points)
   {
     const std::size_t n = std::size_t(1.25 * expected_points) + 64;
-    m_.x.reserve(n); m_.y.reserve(n); m_.vertex_face.reserve(n);
+    m_.points.reserve(n); m_.vertex_face.reserve(n);
     flags_.reserve(n); importance_.reserve(n); target_.reserve(n);
     if(record_births_) birth_.reserve(n);
     m_.faces.reserve(2 * n); m_.face_alive.reserve(2 * n);
@@ -71,7 +71,9 @@ public:
     frontier_.reserve(n); next_.reserve(n);
     for(int i = 0; i < 3; ++i) add_vertex(c_.root_x(i), c_.root_y(i));
     const Tile root = {0, 0, {{0, 1, 2}}, m_.create_face(0, 1, 2), FAT_F, 15, 0};
-    if(c_.should_refine(0, m_.x.data(), m_.y.data(), importance_.data())) frontier_.push_back(root);
+    double rx[3], ry[3];
+    for(int i = 0; i < 3; ++i) { rx[i] = m_.points[i].x(); ry[i] = m_.points[i].y(); }
+    if(c_.should_refine(0, rx, ry, importance_.data())) frontier_.push_back(root);
     for(int level = 0; !frontier_.empty(); ++level) {
       if(face_tile_.size() < m_.faces.size()) face_tile_.resize(m_.faces.size() + m_.faces.size() / 2, null);
       for(std::size_t k = 0; k < frontier_.size(); ++k) face_tile_[frontier_[k].face] = Index(k);
@@ -148,7 +150,7 @@ private:
     const int child_level = level + 1;
     std::array<Index, 5> v = {{t.corners[0], t.corners[1], t.corners[2], null, null}};
     double vx[5], vy[5], vi[5];
-    for(int i = 0; i < 3; ++i) { vx[i] = m_.x[v[i]]; vy[i] = m_.y[v[i]]; vi[i] = importance_[v[i]]; }
+    for(int i = 0; i < 3; ++i) { vx[i] = m_.points[v[i]].x(); vy[i] = m_.points[v[i]].y(); vi[i] = importance_[v[i]]; }
     for(int n = 0; n < r.number_of_new_vertices; ++n) {
       const New_vertex_rule& nv = r.new_vertices[n];
       const int a = nv.near_corner, b = nv.far_corner;
@@ -216,7 +218,7 @@ private:
   void decide(Index x, const Sample_birth& birth)
   {
     if(record_births_) birth_[x] = birth;
-    const bool kept = c_.activate(m_.x[x], m_.y[x], importance_[x], birth, scratch_)
+    const bool kept = c_.activate(m_.points[x].x(), m_.points[x].y(), importance_[x], birth, scratch_)
                       && c_.contains(scratch_.x, scratch_.y);
     if(kept) {
       flags_[x] |= KEPT;

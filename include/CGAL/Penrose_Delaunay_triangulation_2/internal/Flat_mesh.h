@@ -24,6 +24,7 @@ class Flat_mesh
 {
 public:
   typedef std::uint32_t Index;
+  typedef Exact_predicates_inexact_constructions_kernel::Point_2 Point;
   static constexpr Index null = 0xffffffffu;
 
   struct Face
@@ -35,8 +36,8 @@ public:
   static int ccw(int i) { return i == 2 ? 0 : i + 1; }
   static int cw(int i) { return i == 0 ? 2 : i - 1; }
 
-  // vertices
-  std::vector<double> x, y;
+  // vertices, their coordinates in one array for locality
+  std::vector<Point> points;
   std::vector<Index> vertex_face;  // one incident face, or null for a removed vertex
 
   std::vector<Face> faces;
@@ -44,8 +45,8 @@ public:
 
   Index add_vertex(double px, double py)
   {
-    x.push_back(px); y.push_back(py); vertex_face.push_back(null);
-    return Index(x.size() - 1);
+    points.emplace_back(px, py); vertex_face.push_back(null);
+    return Index(points.size() - 1);
   }
 
   Index create_face(Index a, Index b, Index c)
@@ -110,13 +111,13 @@ public:
   Orientation orientation(Index a, Index b, Index c) const
   {
     typedef Exact_predicates_inexact_constructions_kernel K;
-    return K::Orientation_2()(K::Point_2(x[a], y[a]), K::Point_2(x[b], y[b]), K::Point_2(x[c], y[c]));
+    return K::Orientation_2()(points[a], points[b], points[c]);
   }
 
-  Orientation orientation(Index a, Index b, double px, double py) const
+  Orientation orientation(Index a, Index b, const Point& p) const
   {
     typedef Exact_predicates_inexact_constructions_kernel K;
-    return K::Orientation_2()(K::Point_2(x[a], y[a]), K::Point_2(x[b], y[b]), K::Point_2(px, py));
+    return K::Orientation_2()(points[a], points[b], p);
   }
 
   // Splits face f at vertex m, which lies on its edge i (opposite vertex i):

@@ -47,7 +47,7 @@ inline Oriented_side perturbed_side_of_oriented_circle(const Epick::Point_2& p0,
 inline std::size_t make_delaunay(Flat_mesh& m)
 {
   typedef Flat_mesh::Index Index;
-  auto point = [&m](Index v) { return Epick::Point_2(m.x[v], m.y[v]); };
+  auto point = [&m](Index v) -> const Epick::Point_2& { return m.points[v]; };
   std::vector<std::pair<Index, int>> stack;
   stack.reserve(m.faces.size() * 3 / 2);
   for(Index f = 0; f < m.faces.size(); ++f)

@@ -49,13 +49,14 @@ public:
     repaired = false;
     if(!collect_star(v)) return false;
     bool fits = true;
+    const Flat_mesh::Point p(px, py);
     for(std::size_t i = 0; i < ring_.size() && fits; ++i)
-      fits = m_.orientation(ring_[i], ring_[(i + 1) % ring_.size()], px, py) == POSITIVE;
-    if(fits) { m_.x[v] = px; m_.y[v] = py; return true; }
+      fits = m_.orientation(ring_[i], ring_[(i + 1) % ring_.size()], p) == POSITIVE;
+    if(fits) { m_.points[v] = p; return true; }
     repaired = true;
     const Index start = ring_[0];
     if(!remove_vertex(v)) return false;
-    m_.x[v] = px; m_.y[v] = py;
+    m_.points[v] = p;
     return insert_vertex(v, m_.vertex_face[start]);
   }
 
@@ -66,14 +67,14 @@ public:
   template <class Targets>
   std::vector<Index> move_vertices(const Targets& target, std::size_t& repaired)
   {
-    const std::size_t n = m_.x.size();
-    std::vector<std::pair<double, double>> reference(n);
+    const std::size_t n = m_.points.size();
+    std::vector<Flat_mesh::Point> reference(n);
     std::vector<char> state(n, 0);  // 1: moved, 2: sent back
     for(Index v = 0; v < target.size(); ++v)
       if(!std::isnan(target[v].first) && m_.vertex_face[v] != null &&
-         (target[v].first != m_.x[v] || target[v].second != m_.y[v])) {
-        reference[v] = {m_.x[v], m_.y[v]};
-        m_.x[v] = target[v].first; m_.y[v] = target[v].second;
+         (target[v].first != m_.points[v].x() || target[v].second != m_.points[v].y())) {
+        reference[v] = m_.points[v];
+        m_.points[v] = Flat_mesh::Point(target[v].first, target[v].second);
         state[v] = 1;
       }
     std::vector<Index> folded, next;
@@ -87,7 +88,7 @@ public:
           const Index u = m_.faces[f].v[i];
           if(state[u] != 1) continue;
           state[u] = 2;
-          m_.x[u] = reference[u].first; m_.y[u] = reference[u].second;
+          m_.points[u] = reference[u];
           faces_around(u, next);
         }
       }
@@ -109,7 +110,7 @@ public:
   bool insert_vertex(Index v, Index f)
   {
     int on_edge = -1;
-    f = locate(m_.x[v], m_.y[v], f, on_edge);
+    f = locate(m_.points[v], f, on_edge);
     if(f == null) return false;
     if(on_edge < 0) split_in_three(f, v);
     else if(!split_edge(f, on_edge, v)) return false;
@@ -234,10 +235,10 @@ private:
     if(other.first != null) m_.faces[other.first].n[other.second] = f;
   }
 
-  // Walks from face f to the face containing (px, py). on_edge is set to the
+  // Walks from face f to the face containing p. on_edge is set to the
   // index of the edge the point lies on, or -1 inside. Null if the point is
   // outside the mesh or on a vertex.
-  Index locate(double px, double py, Index f, int& on_edge) const
+  Index locate(const Flat_mesh::Point& p, Index f, int& on_edge) const
   {
     for(int step = 0; f != null && step < 100000; ++step) {
       const Flat_mesh::Face& F = m_.faces[f];
@@ -245,7 +246,7 @@ private:
       bool moved = false;
       for(int s = 0; s < 3 && !moved; ++s) {
         const int i = (s + step) % 3;
-        const Orientation o = m_.orientation(F.v[Flat_mesh::ccw(i)], F.v[Flat_mesh::cw(i)], px, py);
+        const Orientation o = m_.orientation(F.v[Flat_mesh::ccw(i)], F.v[Flat_mesh::cw(i)], p);
         if(o == NEGATIVE) { f = F.n[i]; moved = true; }
         else if(o == COLLINEAR) { zero = i; ++zeros; }
       }
