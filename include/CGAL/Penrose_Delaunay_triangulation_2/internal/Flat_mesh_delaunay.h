@@ -18,6 +18,14 @@
 #include <utility>
 #include <vector>
 
+// A macro, not a function: GCC deletes calls to a function whose only
+// effect is a prefetch.
+#if defined(__GNUC__)
+#  define CGAL_PENROSE_PREFETCH(p) __builtin_prefetch(p)
+#else
+#  define CGAL_PENROSE_PREFETCH(p) ((void)(p))
+#endif
+
 namespace CGAL {
 namespace internal {
 namespace Penrose {
@@ -43,18 +51,14 @@ inline Oriented_side perturbed_side_of_oriented_circle(const Epick::Point_2& p0,
   return ON_NEGATIVE_SIDE;
 }
 
-// Flips until Delaunay; returns the number of flips.
-inline std::size_t make_delaunay(Flat_mesh& m)
+// Flips edge i of face f if it is not locally Delaunay, and then every edge
+// that this makes suspect, depth first. Returns the number of flips.
+inline std::size_t flip_from(Flat_mesh& m, Flat_mesh::Index f0, int i0,
+                             std::vector<std::pair<Flat_mesh::Index, int>>& stack)
 {
   typedef Flat_mesh::Index Index;
-  auto point = [&m](Index v) -> const Epick::Point_2& { return m.points[v]; };
-  std::vector<std::pair<Index, int>> stack;
-  stack.reserve(m.faces.size() * 3 / 2);
-  for(Index f = 0; f < m.faces.size(); ++f)
-    if(m.face_alive[f])
-      for(int i = 0; i < 3; ++i)
-        if(m.faces[f].n[i] != Flat_mesh::null && f < m.faces[f].n[i]) stack.emplace_back(f, i);
   std::size_t flips = 0;
+  stack.emplace_back(f0, i0);
   while(!stack.empty()) {
     const Index f = stack.back().first;
     const int i = stack.back().second;
@@ -63,7 +67,8 @@ inline std::size_t make_delaunay(Flat_mesh& m)
     if(g == Flat_mesh::null) continue;
     const Flat_mesh::Face& G = m.faces[g];
     const Index a = m.faces[f].v[i];
-    if(perturbed_side_of_oriented_circle(point(G.v[0]), point(G.v[1]), point(G.v[2]), point(a)) != ON_POSITIVE_SIDE)
+    if(perturbed_side_of_oriented_circle(m.points[G.v[0]], m.points[G.v[1]], m.points[G.v[2]], m.points[a])
+       != ON_POSITIVE_SIDE)
       continue;
     // f = (a, b, c), g = (d, c, b) become f = (a, b, d), g = (a, d, c)
     const int j = m.index_of_neighbor(g, f);
@@ -80,6 +85,43 @@ inline std::size_t make_delaunay(Flat_mesh& m)
     ++flips;
     stack.emplace_back(f, 0); stack.emplace_back(f, 2);
     stack.emplace_back(g, 0); stack.emplace_back(g, 1);
+  }
+  return flips;
+}
+
+// Flips until Delaunay; returns the number of flips. The faces are visited
+// in memory order and each flip's consequences are settled at once: an edge
+// can only stop being locally Delaunay when one of its faces changes, and
+// then it is on the stack.
+inline std::size_t make_delaunay(Flat_mesh& m)
+{
+  typedef Flat_mesh::Index Index;
+  constexpr Index ahead = 8;
+  std::vector<std::pair<Index, int>> stack;
+  std::size_t flips = 0;
+  const Index nf = Index(m.faces.size());
+  for(Index f = 0; f < nf; ++f) {
+    // The walk is bound by memory, not by the predicates: fetch what the
+    // test of the edges of a face ahead reads, in two steps (the faces across
+    // and the face's vertices, then, once those faces are in, the vertices
+    // across).
+    if(f + 2 * ahead < nf) {
+      const Flat_mesh::Face& F = m.faces[f + 2 * ahead];
+      for(int i = 0; i < 3; ++i) {
+        CGAL_PENROSE_PREFETCH(&m.points[F.v[i]]);
+        if(F.n[i] != Flat_mesh::null) CGAL_PENROSE_PREFETCH(&m.faces[F.n[i]]);
+      }
+    }
+    if(f + ahead < nf) {
+      const Index h = f + ahead;
+      const Flat_mesh::Face& F = m.faces[h];
+      for(int i = 0; i < 3; ++i)
+        if(F.n[i] != Flat_mesh::null && h < F.n[i])
+          CGAL_PENROSE_PREFETCH(&m.points[m.faces[F.n[i]].v[m.index_of_neighbor(F.n[i], h)]]);
+    }
+    if(!m.face_alive[f]) continue;
+    for(int i = 0; i < 3; ++i)
+      if(m.faces[f].n[i] != Flat_mesh::null && f < m.faces[f].n[i]) flips += flip_from(m, f, i, stack);
   }
   return flips;
 }
