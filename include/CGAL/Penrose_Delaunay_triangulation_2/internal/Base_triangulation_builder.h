@@ -79,8 +79,34 @@ public:
       for(std::size_t k = 0; k < frontier_.size(); ++k) face_tile_[frontier_[k].face] = Index(k);
       work_.assign(frontier_.size(), Work());
       next_.clear();
-      for(std::size_t k = 0; k < frontier_.size(); ++k) create_vertices(k, level);
-      for(std::size_t k = 0; k < frontier_.size(); ++k) create_triangles(k);
+      // each phase fetches what it will read of the tile some steps ahead
+      // (inline: see CGAL_PENROSE_PREFETCH)
+      for(std::size_t k = 0; k < frontier_.size(); ++k) {
+        if(k + 2 * ahead < frontier_.size()) {
+          const Tile& t = frontier_[k + 2 * ahead];
+          for(Index c : t.corners) {
+            CGAL_PENROSE_PREFETCH(&m_.points[c]);
+            CGAL_PENROSE_PREFETCH(&importance_[c]);
+          }
+          CGAL_PENROSE_PREFETCH(&m_.faces[t.face]);
+        }
+        if(k + ahead < frontier_.size())
+          for(Index g : m_.faces[frontier_[k + ahead].face].n)
+            if(g != null) {
+              CGAL_PENROSE_PREFETCH(&m_.faces[g]);
+              if(g < face_tile_.size()) CGAL_PENROSE_PREFETCH(&face_tile_[g]);
+            }
+        create_vertices(k, level);
+      }
+      for(std::size_t k = 0; k < frontier_.size(); ++k) {
+        if(k + ahead < frontier_.size()) {
+          for(Index g : m_.faces[frontier_[k + ahead].face].n)
+            if(g != null) CGAL_PENROSE_PREFETCH(&m_.faces[g]);
+          for(Index x : work_[k + ahead].new_vertices)
+            if(x != null) CGAL_PENROSE_PREFETCH(&flags_[x]);
+        }
+        create_triangles(k);
+      }
       for(const Tile& t : frontier_) if(t.face < face_tile_.size()) face_tile_[t.face] = null;
       frontier_.swap(next_);
     }
@@ -119,6 +145,8 @@ private:
       if(r.new_vertices[n].edge == e) return n;
     return -1;
   }
+
+  static constexpr std::size_t ahead = 8;
 
   // tile edge e (corner e to corner e + 1) is the face edge opposite corner e + 2
   static int face_edge(int e) { return (e + 2) % 3; }

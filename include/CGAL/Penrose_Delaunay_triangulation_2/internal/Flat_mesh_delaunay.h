@@ -18,14 +18,6 @@
 #include <utility>
 #include <vector>
 
-// A macro, not a function: GCC deletes calls to a function whose only
-// effect is a prefetch.
-#if defined(__GNUC__)
-#  define CGAL_PENROSE_PREFETCH(p) __builtin_prefetch(p)
-#else
-#  define CGAL_PENROSE_PREFETCH(p) ((void)(p))
-#endif
-
 namespace CGAL {
 namespace internal {
 namespace Penrose {
