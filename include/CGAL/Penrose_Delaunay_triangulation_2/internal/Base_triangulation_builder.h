@@ -125,9 +125,11 @@ private:
   };
 
   // What the subdivision of a tile of the current level needs besides, per
-  // new vertex n: the vertex, and the triangles that the neighbour across its
-  // edge left along that edge, if it came first. Held for one level only,
-  // apart from the tiles, to keep them small.
+  // split edge: the new vertex, and the triangles that the neighbour across
+  // left along that edge, if it came first. Every tile type splits at most
+  // its edge 0 and one other edge, so an edge's slot is known without its
+  // type (see slot()). Held for one level only, apart from the tiles, to keep
+  // them small.
   struct Work
   {
     std::array<Index, 2> new_vertices = {{null, null}};
@@ -135,16 +137,9 @@ private:
     Index first_child = null;  // in the next frontier; the others follow
   };
 
-  enum Vertex_flag : std::uint8_t { NEEDED = 1, KEPT = 2 };
+  static int slot(int edge) { return edge == 0 ? 0 : 1; }
 
-  // The new vertex of a tile of type t on its edge e, or -1.
-  static int new_vertex_on_edge(Tile_type t, int e)
-  {
-    const Subdivision_rule& r = rule(t);
-    for(int n = 0; n < r.number_of_new_vertices; ++n)
-      if(r.new_vertices[n].edge == e) return n;
-    return -1;
-  }
+  enum Vertex_flag : std::uint8_t { NEEDED = 1, KEPT = 2 };
 
   static constexpr std::size_t ahead = 8;
 
@@ -184,10 +179,9 @@ private:
       const int a = nv.near_corner, b = nv.far_corner;
       vx[3 + n] = vx[a] + split_fraction * (vx[b] - vx[a]);
       vy[3 + n] = vy[a] + split_fraction * (vy[b] - vy[a]);
-      Index x = w.new_vertices[n];
+      Index& x = w.new_vertices[slot(nv.edge)];
       if(x == null) {
         x = add_vertex(vx[3 + n], vy[3 + n]);
-        w.new_vertices[n] = x;
         // a tile across that is still to come splits the edge here too
         const Index g = face.n[face_edge(nv.edge)];
         const Index across = tile_of_face(g);
@@ -236,9 +230,8 @@ private:
   int slot_across(Index g, const Tile& t, int e) const
   {
     const int ge = m_.edge_index(g, t.corners[(e + 1) % 3], t.corners[e]);
-    const int n = new_vertex_on_edge(frontier_[face_tile_[g]].type, (ge + 1) % 3);
-    CGAL_assertion(n >= 0);
-    return n;
+    CGAL_assertion(ge >= 0);
+    return slot((ge + 1) % 3);
   }
 
   // Whether x, born as a sample, is active and its corrected position is in
@@ -262,10 +255,11 @@ private:
     const Subdivision_rule& r = rule(t.type);
     unsigned mask = 0;
     for(int n = 0; n < r.number_of_new_vertices; ++n)
-      if(flags_[w.new_vertices[n]] != 0) mask |= 1u << n;
+      if(flags_[w.new_vertices[slot(r.new_vertices[n].edge)]] != 0) mask |= 1u << n;
     const Split_pattern& p = split_patterns(t.type, mask);
     const Flat_mesh::Face parent = m_.faces[t.face];
-    const std::array<Index, 5> v = {{t.corners[0], t.corners[1], t.corners[2], w.new_vertices[0], w.new_vertices[1]}};
+    std::array<Index, 5> v = {{t.corners[0], t.corners[1], t.corners[2], null, null}};
+    for(int n = 0; n < r.number_of_new_vertices; ++n) v[3 + n] = w.new_vertices[slot(r.new_vertices[n].edge)];
 
     std::array<Index, 3> tri;
     for(int f = 0; f < p.number_of_triangles; ++f) {
@@ -300,7 +294,7 @@ private:
       if(g != null) m_.link(seg[0], seg_edge[0], g, m_.edge_index(g, b, a));
       return;
     }
-    const int n = new_vertex_on_edge(t.type, e);
+    const int n = slot(e);
     const Index x = w.new_vertices[n];
     if(w.pending_triangles[n][0] != null) {  // the tile across is done: take its triangles
       const Index f0 = w.pending_triangles[n][0], f1 = w.pending_triangles[n][1];
