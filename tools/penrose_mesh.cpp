@@ -315,15 +315,19 @@ struct Mesh
 };
 
 template <class Lift>
-void triangulate(Mesh& m, const Sampler& sampler, const Lift& lift)
+void triangulate(Mesh& m, const Sampler& sampler, const Lift& lift, penrose_tools::Progress_bar& bar)
 {
   m.points.reserve(std::size_t(sampler.expected_number_of_points() * 1.05) + 16);
   m.vertex.reserve(m.points.capacity());
+  const std::function<bool(double)> progress = [&bar](double advancement) {
+    bar.set(advancement);
+    return true;
+  };
   m.t.build(sampler, lift, [&](Vertex_handle v, const Sampler::Sample& s) {
     v->info() = m.points.size();
     m.points.push_back(s.point);
     m.vertex.push_back(v);
-  });
+  }, CGAL::parameters::callback(progress));
 }
 
 // Points along the border, counter-clockwise from the lower left corner,
@@ -569,7 +573,7 @@ void run(Options o)
   const Raster<double>& heights = in.heights;
   auto lift = [&heights](double x, double y) { return K::Point_3(x, y, heights.values.empty() ? 0. : heights(x, y)); };
   Mesh m;
-  triangulate(m, *sampler, lift);
+  triangulate(m, *sampler, lift, bar);
   const std::size_t sampled = m.points.size();
   const std::size_t boundary = o.boundary ? add_boundary(m, o, d, sampler->density_scale(), lift) : 0;
   time.triangulate = seconds_since(t0);

@@ -17,6 +17,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <functional>
 #include <limits>
 #include <type_traits>
 #include <utility>
@@ -126,13 +127,18 @@ public:
   }
 
   /// Samples `density` over `region` (see `Penrose_importance_sampler` for
-  /// the named parameters) and triangulates the samples.
+  /// the named parameters, and `build()` for `callback`) and triangulates
+  /// the samples.
   template <class Density, class NamedParameters = parameters::Default_named_parameters,
             class G = Gt, class = typename G::Iso_rectangle_2>
   Penrose_Delaunay_triangulation_2(const typename G::Iso_rectangle_2& region, const Density& density,
                                    const NamedParameters& np = parameters::default_values())
-    : Penrose_Delaunay_triangulation_2(Penrose_importance_sampler<G>(region, density, np))
-  {}
+    : Base(Gt())
+  {
+    auto construct = this->geom_traits().construct_point_2_object();
+    build(Penrose_importance_sampler<G>(region, density, np),
+          [construct](double x, double y) { return construct(x, y); }, No_vertex_visitor(), np);
+  }
   /// @}
 
   /*!
@@ -140,12 +146,31 @@ public:
   made by `lift(x, y)`. `on_vertex(v, sample)` is called for every vertex
   created, with the `Penrose_importance_sampler::Sample` it comes from, for
   instance to fill the info of a vertex base with info.
+
+  \param np an optional sequence of named parameters among:
+    - `callback`: a `std::function<bool(double)>`, called regularly with the
+      advancement of the construction, in [0, 1]; if it returns `false`, the
+      construction stops and the triangulation is left empty.
+
+  \return `false` if `callback` stopped the construction, `true` otherwise.
   */
-  template <class SamplerTraits, class Lift, class OnVertex>
-  void build(const Penrose_importance_sampler<SamplerTraits>& sampler, const Lift& lift, OnVertex on_vertex)
+  template <class SamplerTraits, class Lift, class OnVertex,
+            class NamedParameters = parameters::Default_named_parameters>
+  bool build(const Penrose_importance_sampler<SamplerTraits>& sampler, const Lift& lift, OnVertex on_vertex,
+             const NamedParameters& np = parameters::default_values())
   {
     constexpr bool visits = !std::is_same<OnVertex, No_vertex_visitor>::value;
+    const std::function<bool(double)> callback =
+      parameters::choose_parameter(parameters::get_parameter(np, internal_np::callback), std::function<bool(double)>());
+    auto abandon = [&]() {
+      this->clear();
+      stats_ = Construction_statistics();
+      return false;
+    };
+    // the advancements are the shares of the time that the steps end at (10^6 points)
+    auto proceed = [&](double advancement) { return !callback || callback(advancement); };
     const internal::Penrose::Sampling_context& context = sampler.context();
+    this->clear();
     stats_ = Construction_statistics();
     Flat_mesh mesh;
     // where each sample of the region goes; NaN for the vertices to remove
@@ -153,7 +178,9 @@ public:
     std::vector<std::pair<Index, internal::Penrose::Placed_sample>> placed;  // for on_vertex only
     {
       internal::Penrose::Base_triangulation_builder builder(context, mesh, visits);
-      builder.build(sampler.expected_number_of_points());
+      std::function<bool(double)> progress;
+      if(callback) progress = [&callback](double f) { return callback(0.58 * f); };
+      if(!builder.build(sampler.expected_number_of_points(), progress)) return abandon();
       target = builder.take_targets();
       if(visits)
         for(Index v = 0; v < target.size(); ++v)
@@ -172,8 +199,11 @@ public:
         if(editor.remove_vertex(Index(v))) ++stats_.removed_vertices;
         else stuck.push_back(Index(v));
       }
+    if(!proceed(0.61)) return abandon();
     const std::vector<Index> unplaced = editor.move_vertices(target, stats_.repaired_vertices);
+    if(!proceed(0.66)) return abandon();
     stats_.flips = internal::Penrose::make_delaunay(mesh);
+    if(!proceed(0.84)) return abandon();
 
     // keep of the targets only what is still needed, before the TDS grows
     std::vector<std::pair<double, double>> unplaced_target;
@@ -182,6 +212,7 @@ public:
 
     std::vector<Vertex_handle> handle = write_tds(mesh, lift);
     mesh = Flat_mesh();
+    if(!proceed(0.99)) return abandon();
     for(Index v : stuck) this->remove(handle[v]);
     for(Index w : frame) this->remove(handle[w]);
     for(std::size_t i = 0; i < unplaced.size(); ++i)
@@ -189,12 +220,13 @@ public:
     stats_.fallbacks = stuck.size() + unplaced.size();
     for(const auto& vp : placed)
       if(handle[vp.first] != Vertex_handle()) on_vertex(handle[vp.first], sampler.to_sample(vp.second));
+    return proceed(1.) || abandon();
   }
 
   template <class SamplerTraits, class Lift>
-  void build(const Penrose_importance_sampler<SamplerTraits>& sampler, const Lift& lift)
+  bool build(const Penrose_importance_sampler<SamplerTraits>& sampler, const Lift& lift)
   {
-    build(sampler, lift, No_vertex_visitor());
+    return build(sampler, lift, No_vertex_visitor());
   }
 
   /// \name Statistics of the construction

@@ -210,6 +210,45 @@ TEST(Triangulation, StaysValidUnderEdits)
   EXPECT_GT(voronoi_edges, 0u);
 }
 
+TEST(Triangulation, CallbackReportsAdvancementAndStops)
+{
+  const Sampler s(unit_square, [](const Point& p) { return 1. + p.x(); },
+                  CGAL::parameters::number_of_output_points(300000));
+  auto lift = [](double x, double y) { return Point(x, y); };
+  auto no_info = [](CGAL::Penrose_Delaunay_triangulation_2<Epick>::Vertex_handle, const Sampler::Sample&) {};
+  std::vector<double> seen;
+  CGAL::Penrose_Delaunay_triangulation_2<Epick> pdt;
+  const std::function<bool(double)> record = [&seen](double a) { seen.push_back(a); return true; };
+  ASSERT_TRUE(pdt.build(s, lift, no_info, CGAL::parameters::callback(record)));
+  // the tile tree reports at each level and every 65536 tiles, then each step
+  EXPECT_GE(std::count_if(seen.begin(), seen.end(), [](double a) { return a < 0.58; }), 10);
+  EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
+  EXPECT_GE(seen.front(), 0.);
+  EXPECT_EQ(seen.back(), 1.);
+  std::vector<Point> points;
+  s(std::back_inserter(points));
+  const CGAL::Delaunay_triangulation_2<Epick> dt(points.begin(), points.end());
+  EXPECT_TRUE(edge_set(pdt, xy_of) == edge_set(dt, xy_of));
+
+  // stopped within the tile tree, and after it: empty, valid, and usable again
+  for(double limit : {0.3, 0.7}) {
+    const std::function<bool(double)> stop = [limit](double a) { return a < limit; };
+    EXPECT_FALSE(pdt.build(s, lift, no_info, CGAL::parameters::callback(stop))) << limit;
+    EXPECT_EQ(pdt.number_of_vertices(), 0u) << limit;
+    EXPECT_TRUE(pdt.is_valid()) << limit;
+    pdt.insert(Point(0.5, 0.5));
+    EXPECT_EQ(pdt.number_of_vertices(), 1u) << limit;
+  }
+  // through the constructor from a region and a density
+  std::size_t calls = 0;
+  const std::function<bool(double)> count = [&calls](double) { ++calls; return true; };
+  const CGAL::Penrose_Delaunay_triangulation_2<Epick> from_density(
+    unit_square, [](const Point&) { return 1.; },
+    CGAL::parameters::number_of_output_points(1000).callback(count));
+  EXPECT_GT(calls, 0u);
+  EXPECT_GT(from_density.number_of_vertices(), 900u);
+}
+
 namespace {
 template <class K>
 void expect_kernel_matches(const std::string& name)

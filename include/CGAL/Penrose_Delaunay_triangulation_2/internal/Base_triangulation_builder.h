@@ -23,8 +23,10 @@
 
 #include <CGAL/assertions.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <utility>
 #include <vector>
@@ -59,8 +61,10 @@ public:
   }
 
   // `expected_points` sizes the arrays once: growing them level after level
-  // would fault fresh pages in at every reallocation.
-  void build(double expected_points)
+  // would fault fresh pages in at every reallocation. `progress(f)`, if set,
+  // is called now and then with an estimate f in [0, 1) of the work done;
+  // the build stops, returning false, as soon as it returns false.
+  bool build(double expected_points, const std::function<bool(double)>& progress)
   {
     const std::size_t n = std::size_t(1.25 * expected_points) + 64;
     m_.points.reserve(n); m_.vertex_face.reserve(n);
@@ -74,6 +78,10 @@ public:
     double rx[3], ry[3];
     for(int i = 0; i < 3; ++i) { rx[i] = m_.points[i].x(); ry[i] = m_.points[i].y(); }
     if(c_.should_refine(0, rx, ry, importance_.data())) frontier_.push_back(root);
+    // about 1.9 tiles are subdivided per point (1.88 for a constant density at 10^6)
+    const double expected_tiles = 1.9 * expected_points + 1.;
+    std::size_t tiles_done = 0;
+    auto report = [&](double tiles) { return !progress || progress((std::min)(0.99, tiles / expected_tiles)); };
     for(int level = 0; !frontier_.empty(); ++level) {
       if(face_tile_.size() < m_.faces.size()) face_tile_.resize(m_.faces.size() + m_.faces.size() / 2, null);
       for(std::size_t k = 0; k < frontier_.size(); ++k) face_tile_[frontier_[k].face] = Index(k);
@@ -82,6 +90,7 @@ public:
       // each phase fetches what it will read of the tile some steps ahead
       // (inline: see CGAL_PENROSE_PREFETCH)
       for(std::size_t k = 0; k < frontier_.size(); ++k) {
+        if(k % progress_period == 0 && !report(tiles_done + 0.5 * k)) return false;
         if(k + 2 * ahead < frontier_.size()) {
           const Tile& t = frontier_[k + 2 * ahead];
           for(Index c : t.corners) {
@@ -99,6 +108,7 @@ public:
         create_vertices(k, level);
       }
       for(std::size_t k = 0; k < frontier_.size(); ++k) {
+        if(k % progress_period == 0 && !report(tiles_done + 0.5 * (frontier_.size() + k))) return false;
         if(k + ahead < frontier_.size()) {
           for(Index g : m_.faces[frontier_[k + ahead].face].n)
             if(g != null) CGAL_PENROSE_PREFETCH(&m_.faces[g]);
@@ -108,8 +118,10 @@ public:
         create_triangles(k);
       }
       for(const Tile& t : frontier_) if(t.face < face_tile_.size()) face_tile_[t.face] = null;
+      tiles_done += frontier_.size();
       frontier_.swap(next_);
     }
+    return true;
   }
 
 private:
@@ -142,6 +154,7 @@ private:
   enum Vertex_flag : std::uint8_t { NEEDED = 1, KEPT = 2 };
 
   static constexpr std::size_t ahead = 8;
+  static constexpr std::size_t progress_period = std::size_t(1) << 16;
 
   // tile edge e (corner e to corner e + 1) is the face edge opposite corner e + 2
   static int face_edge(int e) { return (e + 2) % 3; }
