@@ -148,6 +148,24 @@ public:
     return g;
   }
 
+  // Flips the edge i of face f, whose quadrilateral must be strictly convex:
+  // f = (a, b, c) and g = (d, c, b) across become f = (a, b, d), g = (a, d, c).
+  void flip(Index f, int i)
+  {
+    const Index g = faces[f].n[i];
+    const int j = index_of_neighbor(g, f);
+    const Face F = faces[f], G = faces[g];
+    const Index a = F.v[i], b = F.v[ccw(i)], c = F.v[cw(i)], d = G.v[j];
+    const Index nf_b = F.n[ccw(i)], nf_c = F.n[cw(i)];
+    const Index ng_c = G.n[ccw(j)], ng_b = G.n[cw(j)];
+    faces[f].v = {{a, b, d}};
+    faces[f].n = {{ng_c, g, nf_c}};
+    faces[g].v = {{a, d, c}};
+    faces[g].n = {{ng_b, nf_b, f}};
+    if(ng_c != null) faces[ng_c].n[index_of_neighbor(ng_c, g)] = f;
+    if(nf_b != null) faces[nf_b].n[index_of_neighbor(nf_b, f)] = g;
+    vertex_face[a] = f; vertex_face[b] = f; vertex_face[d] = f; vertex_face[c] = g;
+  }
 
 private:
   std::vector<Index> free_;

@@ -62,18 +62,7 @@ inline std::size_t flip_from(Flat_mesh& m, Flat_mesh::Index f0, int i0,
     if(perturbed_side_of_oriented_circle(m.points[G.v[0]], m.points[G.v[1]], m.points[G.v[2]], m.points[a])
        != ON_POSITIVE_SIDE)
       continue;
-    // f = (a, b, c), g = (d, c, b) become f = (a, b, d), g = (a, d, c)
-    const int j = m.index_of_neighbor(g, f);
-    const Index b = m.faces[f].v[Flat_mesh::ccw(i)], c = m.faces[f].v[Flat_mesh::cw(i)], d = G.v[j];
-    const Index nf_b = m.faces[f].n[Flat_mesh::ccw(i)], nf_c = m.faces[f].n[Flat_mesh::cw(i)];
-    const Index ng_c = G.n[Flat_mesh::ccw(j)], ng_b = G.n[Flat_mesh::cw(j)];
-    m.faces[f].v = {{a, b, d}};
-    m.faces[f].n = {{ng_c, g, nf_c}};
-    m.faces[g].v = {{a, d, c}};
-    m.faces[g].n = {{ng_b, nf_b, f}};
-    if(ng_c != Flat_mesh::null) m.faces[ng_c].n[m.index_of_neighbor(ng_c, g)] = f;
-    if(nf_b != Flat_mesh::null) m.faces[nf_b].n[m.index_of_neighbor(nf_b, f)] = g;
-    m.vertex_face[a] = f; m.vertex_face[b] = f; m.vertex_face[d] = f; m.vertex_face[c] = g;
+    m.flip(f, i);  // f = (a, b, c), g = (d, c, b) become (a, b, d), (a, d, c)
     ++flips;
     stack.emplace_back(f, 0); stack.emplace_back(f, 2);
     stack.emplace_back(g, 0); stack.emplace_back(g, 1);
