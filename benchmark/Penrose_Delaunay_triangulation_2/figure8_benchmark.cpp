@@ -6,8 +6,7 @@
 //   input,N,method,median_seconds,ns_per_point,peak_bytes_per_point
 // The script run_benchmarks.sh calls it once per (input, size, method), each
 // in its own process so that the peak memory (of the first repetition) is that
-// of the method alone, and
-// adds the ratio to CGAL's range insertion.
+// of the method alone, and adds the ratio to CGAL's range insertion.
 //
 //   figure8_benchmark INPUT N METHOD REPETITIONS [IMAGE]
 //   INPUT: constant | ramp | image | terrain
