@@ -16,6 +16,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstring>
 #include <cstddef>
 #include <functional>
 #include <limits>
@@ -318,24 +319,41 @@ private:
         vh[v]->set_point(lift(m.points[v].x(), m.points[v].y()));
       }
     std::vector<Flat_mesh::Point>().swap(m.points);
-    std::vector<Face_handle> fh(m.faces.size());
+    // The TDS face of each flat face. The flat face's vertex slots are dead
+    // once that exists: they hold its handle where it fits, so that no array
+    // of handles is added at the peak of the construction.
+    constexpr bool in_place = std::is_trivially_copyable<Face_handle>::value &&
+                              sizeof(Face_handle) <= sizeof(Flat_mesh::Face::v);
+    std::vector<Face_handle> side(in_place ? 0 : m.faces.size());
+    auto keep_handle = [&m, &side](std::size_t f, Face_handle h) {
+      if constexpr(in_place) std::memcpy(m.faces[f].v.data(), &h, sizeof h);
+      else side[f] = h;
+    };
+    auto fh = [&m, &side](std::size_t f) {
+      Face_handle h;
+      if constexpr(in_place) std::memcpy(&h, m.faces[f].v.data(), sizeof h);
+      else h = side[f];
+      return h;
+    };
     for(std::size_t f = 0; f < m.faces.size(); ++f)
       if(m.face_alive[f]) {
         const auto& F = m.faces[f];
-        fh[f] = tds.create_face(vh[F.v[0]], vh[F.v[1]], vh[F.v[2]]);
+        keep_handle(f, tds.create_face(vh[F.v[0]], vh[F.v[1]], vh[F.v[2]]));
       }
     std::vector<std::pair<Vertex_handle, Face_handle>> hull;  // infinite face (inf, b, a), keyed by b
     for(std::size_t f = 0; f < m.faces.size(); ++f)
-      if(m.face_alive[f])
+      if(m.face_alive[f]) {
+        const Face_handle F = fh(f);
         for(int i = 0; i < 3; ++i) {
           const Index g = m.faces[f].n[i];
-          if(g != Flat_mesh::null) { fh[f]->set_neighbor(i, fh[g]); continue; }
-          const Vertex_handle a = vh[m.faces[f].v[Flat_mesh::ccw(i)]], b = vh[m.faces[f].v[Flat_mesh::cw(i)]];
+          if(g != Flat_mesh::null) { F->set_neighbor(i, fh(g)); continue; }
+          const Vertex_handle a = F->vertex(Flat_mesh::ccw(i)), b = F->vertex(Flat_mesh::cw(i));
           const Face_handle h = tds.create_face(infinite, b, a);
-          h->set_neighbor(0, fh[f]);
-          fh[f]->set_neighbor(i, h);
+          h->set_neighbor(0, F);
+          F->set_neighbor(i, h);
           hull.emplace_back(b, h);
         }
+      }
     // (inf, b, a) borders (inf, a, c) across the edge inf-a, and (inf, d, b) across inf-b
     for(auto& bh : hull)
       for(auto& other : hull)
@@ -344,7 +362,7 @@ private:
           other.second->set_neighbor(2, bh.second);
         }
     for(std::size_t v = 0; v < vh.size(); ++v)
-      if(vh[v] != Vertex_handle()) vh[v]->set_face(fh[m.vertex_face[v]]);
+      if(vh[v] != Vertex_handle()) vh[v]->set_face(fh(m.vertex_face[v]));
     infinite->set_face(hull.front().second);
     return vh;
   }

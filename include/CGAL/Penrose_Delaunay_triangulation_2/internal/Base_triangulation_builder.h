@@ -71,8 +71,6 @@ public:
     flags_.reserve(n); importance_.reserve(n); target_.reserve(n);
     if(record_births_) birth_.reserve(n);
     m_.faces.reserve(2 * n); m_.face_alive.reserve(2 * n);
-    face_tile_.assign(2 * n, null);
-    frontier_.reserve(n); next_.reserve(n);
     for(int i = 0; i < 3; ++i) add_vertex(c_.root_x(i), c_.root_y(i));
     const Tile root = {0, 0, {{0, 1, 2}}, m_.create_face(0, 1, 2), FAT_F, 15, 0};
     double rx[3], ry[3];
@@ -83,10 +81,15 @@ public:
     std::size_t tiles_done = 0;
     auto report = [&](double tiles) { return !progress || progress((std::min)(0.99, tiles / expected_tiles)); };
     for(int level = 0; !frontier_.empty(); ++level) {
-      if(face_tile_.size() < m_.faces.size()) face_tile_.resize(m_.faces.size() + m_.faces.size() / 2, null);
+      // the frontier's faces all exist before the level starts
+      face_tile_.resize(m_.faces.size(), null);
       for(std::size_t k = 0; k < frontier_.size(); ++k) face_tile_[frontier_[k].face] = Index(k);
       work_.assign(frontier_.size(), Work());
-      next_.clear();
+      // a fresh block for the children (at most 3 per tile, so it never
+      // moves; untouched pages cost nothing): the previous level's block is
+      // released rather than held through the level
+      std::vector<Tile>().swap(next_);
+      next_.reserve(3 * frontier_.size());
       // each phase fetches what it will read of the tile some steps ahead
       // (inline: see CGAL_PENROSE_PREFETCH)
       for(std::size_t k = 0; k < frontier_.size(); ++k) {
