@@ -7,12 +7,13 @@
 // A new vertex enters the mesh only if it is kept (an active sample that
 // lands in the region) or a corner of a tile that is subdivided further:
 // the other ones, which section 3.3 would create and remove again, are never
-// created, and the children around them stay merged (Split_patterns). A
-// present vertex on an edge whose other side is a leaf splits that leaf's
-// face in two. Two tiles of one level that split a shared edge share its
-// vertex: the first to reach it leaves it, and later its triangles along the
-// edge, to the second. Only the tiles that are still to be subdivided are
-// held, so memory follows the mesh, not the tree.
+// created, not even as records, and the children around them stay merged
+// (Split_patterns). A present vertex on an edge whose other side is a leaf
+// splits that leaf's face in two. Two tiles of one level that split a shared
+// edge share its vertex: the first that finds it present creates it for
+// both, and the first to triangulate leaves its triangles along the edge to
+// the second. Only the tiles that are still to be subdivided are held, so
+// memory follows the mesh, not the tree.
 
 #ifndef CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_BASE_TRIANGULATION_BUILDER_H
 #define CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_BASE_TRIANGULATION_BUILDER_H
@@ -68,10 +69,10 @@ public:
   {
     const std::size_t n = std::size_t(1.25 * expected_points) + 64;
     m_.points.reserve(n); m_.vertex_face.reserve(n);
-    flags_.reserve(n); importance_.reserve(n); target_.reserve(n);
+    importance_.reserve(n); target_.reserve(n);
     if(record_births_) birth_.reserve(n);
     m_.faces.reserve(2 * n); m_.face_alive.reserve(2 * n);
-    for(int i = 0; i < 3; ++i) add_vertex(c_.root_x(i), c_.root_y(i));
+    for(int i = 0; i < 3; ++i) add_vertex(c_.root_x(i), c_.root_y(i), c_.importance(c_.root_x(i), c_.root_y(i)));
     const Tile root = {0, 0, {{0, 1, 2}}, m_.create_face(0, 1, 2), FAT_F, 15, 0};
     double rx[3], ry[3];
     for(int i = 0; i < 3; ++i) { rx[i] = m_.points[i].x(); ry[i] = m_.points[i].y(); }
@@ -112,12 +113,9 @@ public:
       }
       for(std::size_t k = 0; k < frontier_.size(); ++k) {
         if(k % progress_period == 0 && !report(tiles_done + 0.5 * (frontier_.size() + k))) return false;
-        if(k + ahead < frontier_.size()) {
+        if(k + ahead < frontier_.size())
           for(Index g : m_.faces[frontier_[k + ahead].face].n)
             if(g != null) CGAL_PENROSE_PREFETCH(&m_.faces[g]);
-          for(Index x : work_[k + ahead].new_vertices)
-            if(x != null) CGAL_PENROSE_PREFETCH(&flags_[x]);
-        }
         create_triangles(k);
       }
       for(const Tile& t : frontier_) if(t.face < face_tile_.size()) face_tile_[t.face] = null;
@@ -154,19 +152,16 @@ private:
 
   static int slot(int edge) { return edge == 0 ? 0 : 1; }
 
-  enum Vertex_flag : std::uint8_t { NEEDED = 1, KEPT = 2 };
-
   static constexpr std::size_t ahead = 8;
   static constexpr std::size_t progress_period = std::size_t(1) << 16;
 
   // tile edge e (corner e to corner e + 1) is the face edge opposite corner e + 2
   static int face_edge(int e) { return (e + 2) % 3; }
 
-  Index add_vertex(double x, double y)
+  Index add_vertex(double x, double y, double importance)
   {
     const Index v = m_.add_vertex(x, y);
-    importance_.push_back(c_.importance(x, y));
-    flags_.push_back(0);
+    importance_.push_back(importance);
     target_.emplace_back(std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN());
     if(record_births_) birth_.push_back(Sample_birth{0, 0, 0, 0});
     return v;
@@ -178,14 +173,16 @@ private:
     return (g == null || g >= face_tile_.size()) ? null : face_tile_[g];
   }
 
-  // Phase 1: the new vertices, their samples, and the children that will be
-  // subdivided (their corners are needed).
+  // Phase 1: the samples born on the new vertices, and the children that
+  // will be subdivided. A new vertex enters the mesh only once it is known to
+  // be present, kept or a corner of a subdivided child (of this tile or of
+  // the one across); until then each of the two tiles computes its position
+  // and importance itself (the same doubles from the same operands).
   void create_vertices(std::size_t k, int level)
   {
     const Tile& t = frontier_[k];
     Work& w = work_[k];
     const Subdivision_rule& r = rule(t.type);
-    const Flat_mesh::Face& face = m_.faces[t.face];
     const int child_level = level + 1;
     std::array<Index, 5> v = {{t.corners[0], t.corners[1], t.corners[2], null, null}};
     double vx[5], vy[5], vi[5];
@@ -196,41 +193,58 @@ private:
       vx[3 + n] = vx[a] + split_fraction * (vx[b] - vx[a]);
       vy[3 + n] = vy[a] + split_fraction * (vy[b] - vy[a]);
       Index& x = w.new_vertices[slot(nv.edge)];
-      if(x == null) {
-        x = add_vertex(vx[3 + n], vy[3 + n]);
-        // a tile across that is still to come splits the edge here too
-        const Index g = face.n[face_edge(nv.edge)];
-        const Index across = tile_of_face(g);
-        if(across != null && across > k) work_[across].new_vertices[slot_across(g, t, nv.edge)] = x;
+      vi[3 + n] = (x != null) ? importance_[x] : c_.importance(vx[3 + n], vy[3 + n]);
+      if(nv.is_sample) {
+        const Sample_birth birth = { t.code * 4 + r.sample_code_pair,
+                                     t.threshold + pair_weight(r.sample_code_pair, child_level),
+                                     static_cast<std::uint8_t>(child_level),
+                                     add_direction(t.direction, r.sample_direction_step) };
+        if(kept(vx[3 + n], vy[3 + n], vi[3 + n], birth)) {
+          if(x == null) add_new_vertex(k, nv.edge, vx[3 + n], vy[3 + n], vi[3 + n]);
+          target_[x] = {scratch_.x, scratch_.y};
+          if(record_births_) birth_[x] = birth;
+        }
       }
       v[3 + n] = x;
-      vi[3 + n] = importance_[x];
-      if(nv.is_sample)
-        decide(x, Sample_birth{ t.code * 4 + r.sample_code_pair,
-                                t.threshold + pair_weight(r.sample_code_pair, child_level),
-                                static_cast<std::uint8_t>(child_level),
-                                add_direction(t.direction, r.sample_direction_step) });
     }
     w.first_child = Index(next_.size());
     for(int c = 0; c < r.number_of_children; ++c) {
       const Child_rule& cr = r.children[c];
       double cx[3], cy[3], ci[3];
-      Tile child;
       for(int i = 0; i < 3; ++i) {
-        const int ci_ = cr.corners[i];
-        child.corners[i] = v[ci_]; cx[i] = vx[ci_]; cy[i] = vy[ci_]; ci[i] = vi[ci_];
+        const int j = cr.corners[i];
+        cx[i] = vx[j]; cy[i] = vy[j]; ci[i] = vi[j];
       }
       if(!c_.should_refine(child_level, cx, cy, ci)) continue;
+      Tile child;
+      for(int i = 0; i < 3; ++i) {
+        const int j = cr.corners[i];
+        if(v[j] == null)
+          v[j] = add_new_vertex(k, r.new_vertices[j - 3].edge, vx[j], vy[j], vi[j]);
+        child.corners[i] = v[j];
+      }
       child.code = t.code * 4 + cr.code_pair;
       child.threshold = t.threshold + pair_weight(cr.code_pair, child_level);
       child.face = null;
       child.type = cr.type;
       child.direction = add_direction(t.direction, cr.direction_step);
       child.refined_children = 0;
-      for(Index corner : child.corners) flags_[corner] |= NEEDED;
       frontier_[k].refined_children |= std::uint8_t(1u << c);
       next_.push_back(child);
     }
+  }
+
+  // Adds the new vertex of tile k on its edge e, for it and for the tile
+  // across, if that one is subdivided at this level too.
+  Index add_new_vertex(std::size_t k, int e, double x, double y, double importance)
+  {
+    const Index v = add_vertex(x, y, importance);
+    const Tile& t = frontier_[k];
+    work_[k].new_vertices[slot(e)] = v;
+    const Index g = m_.faces[t.face].n[face_edge(e)];
+    const Index across = tile_of_face(g);
+    if(across != null) work_[across].new_vertices[slot_across(g, t, e)] = v;
+    return v;
   }
 
   // How many children of t before child c are in the next frontier.
@@ -250,17 +264,11 @@ private:
     return slot((ge + 1) % 3);
   }
 
-  // Whether x, born as a sample, is active and its corrected position is in
-  // the region; decided at once, so that no birth data is held.
-  void decide(Index x, const Sample_birth& birth)
+  // Whether the sample born at (x, y) is active and its corrected position,
+  // left in scratch_, is in the region.
+  bool kept(double x, double y, double importance, const Sample_birth& birth)
   {
-    if(record_births_) birth_[x] = birth;
-    const bool kept = c_.activate(m_.points[x].x(), m_.points[x].y(), importance_[x], birth, scratch_)
-                      && c_.contains(scratch_.x, scratch_.y);
-    if(kept) {
-      flags_[x] |= KEPT;
-      target_[x] = {scratch_.x, scratch_.y};
-    }
+    return c_.activate(x, y, importance, birth, scratch_) && c_.contains(scratch_.x, scratch_.y);
   }
 
   // Phase 2: the triangles of the tile, and their links across its edges.
@@ -271,7 +279,7 @@ private:
     const Subdivision_rule& r = rule(t.type);
     unsigned mask = 0;
     for(int n = 0; n < r.number_of_new_vertices; ++n)
-      if(flags_[w.new_vertices[slot(r.new_vertices[n].edge)]] != 0) mask |= 1u << n;
+      if(w.new_vertices[slot(r.new_vertices[n].edge)] != null) mask |= 1u << n;
     const Split_pattern& p = split_patterns(t.type, mask);
     const Flat_mesh::Face parent = m_.faces[t.face];
     std::array<Index, 5> v = {{t.corners[0], t.corners[1], t.corners[2], null, null}};
@@ -336,7 +344,6 @@ private:
   const Sampling_context& c_;
   Flat_mesh& m_;
   const bool record_births_;
-  std::vector<std::uint8_t> flags_;  // Vertex_flag: in the mesh if either is set
   std::vector<Sample_birth> birth_;  // with record_births_ only
   std::vector<Tile> frontier_, next_;
   std::vector<Work> work_;           // for the tiles of frontier_
