@@ -85,7 +85,8 @@ public:
       // the frontier's faces all exist before the level starts
       face_tile_.resize(m_.faces.size(), null);
       for(std::size_t k = 0; k < frontier_.size(); ++k) face_tile_[frontier_[k].face] = Index(k);
-      work_.assign(frontier_.size(), Work());
+      std::vector<Work>().swap(work_);  // released before its successor is made
+      work_.resize(frontier_.size());
       // a fresh block for the children (at most 3 per tile, so it never
       // moves; untouched pages cost nothing): the previous level's block is
       // released rather than held through the level
