@@ -341,7 +341,10 @@ private:
         keep_handle(f, tds.create_face(vh[F.v[0]], vh[F.v[1]], vh[F.v[2]]));
       }
     std::vector<std::pair<Vertex_handle, Face_handle>> hull;  // infinite face (inf, b, a), keyed by b
-    for(std::size_t f = 0; f < m.faces.size(); ++f)
+    for(std::size_t f = 0; f < m.faces.size(); ++f) {
+      if(f + 16 < m.faces.size())
+        for(Index g : m.faces[f + 16].n)
+          if(g != Flat_mesh::null) CGAL_PENROSE_PREFETCH(&m.faces[g]);
       if(m.face_alive[f]) {
         const Face_handle F = fh(f);
         for(int i = 0; i < 3; ++i) {
@@ -354,6 +357,7 @@ private:
           hull.emplace_back(b, h);
         }
       }
+    }
     // (inf, b, a) borders (inf, a, c) across the edge inf-a, and (inf, d, b) across inf-b
     for(auto& bh : hull)
       for(auto& other : hull)
