@@ -11,7 +11,10 @@
 //   triangulation_benchmark memory penrose|cgal [N=1e6]
 //       peak resident bytes per point of one construction (run each in its own process)
 //   triangulation_benchmark scaling [constant|ramp]
-//       ns per point at 1e5 and 4e6
+//       ns per point at 1e5 and 4e6, five constructions of each in this process
+//   triangulation_benchmark once [N=1e6] [constant|ramp]
+//       ns per point of a single construction (run it in a loop for fresh
+//       processes, where no run inherits the allocator's warm pages)
 
 #include <CGAL/Penrose_Delaunay_triangulation_2.h>
 
@@ -139,6 +142,17 @@ static int scaling(const std::string& input)
   return 0;
 }
 
+static int once(double n, const std::string& input)
+{
+  const Sampler sampler = make_sampler(n, input);
+  const double t0 = now();
+  Pdt pdt(sampler);
+  const double t = now() - t0;
+  std::cout << input << " " << pdt.number_of_vertices() << " points: " << t / pdt.number_of_vertices() * 1e9
+            << " ns per point\n";
+  return 0;
+}
+
 int main(int argc, char** argv)
 {
   const std::string mode = argc > 1 ? argv[1] : "speed";
@@ -146,6 +160,8 @@ int main(int argc, char** argv)
     return speed(argc > 2 ? std::atof(argv[2]) : 1e6, argc > 3 ? argv[3] : "constant", argc > 4 ? std::atoi(argv[4]) : 5);
   if(mode == "memory") return memory(argc > 2 ? argv[2] : "penrose", argc > 3 ? std::atof(argv[3]) : 1e6);
   if(mode == "scaling") return scaling(argc > 2 ? argv[2] : "constant");
-  std::cerr << "usage: triangulation_benchmark speed [N] [constant|ramp] [runs] | memory penrose|cgal [N] | scaling [input]\n";
+  if(mode == "once") return once(argc > 2 ? std::atof(argv[2]) : 1e6, argc > 3 ? argv[3] : "constant");
+  std::cerr << "usage: triangulation_benchmark speed [N] [constant|ramp] [runs] | memory penrose|cgal [N] | "
+               "scaling [input] | once [N] [input]\n";
   return 2;
 }
