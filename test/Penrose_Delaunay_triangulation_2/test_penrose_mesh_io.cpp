@@ -37,7 +37,12 @@ namespace {
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 namespace IO = CGAL::IO;
 
-std::string temp(const std::string& name) { return ::testing::TempDir() + "penrose_io_" + name; }
+// A file of the running test: ctest runs the tests in parallel processes.
+std::string temp(const std::string& name)
+{
+  const ::testing::TestInfo* test = ::testing::UnitTest::GetInstance()->current_test_info();
+  return ::testing::TempDir() + "penrose_io_" + test->test_suite_name() + "_" + test->name() + "_" + name;
+}
 
 void write_file(const std::string& file, const std::string& bytes)
 {
