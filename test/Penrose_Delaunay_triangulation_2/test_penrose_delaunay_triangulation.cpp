@@ -272,6 +272,61 @@ TEST(Traits, EpeckAndGmpqMatchCgal)
   expect_kernel_matches<CGAL::Simple_cartesian<CGAL::Gmpq>>("Simple_cartesian<Gmpq>");
 }
 
+namespace {
+// The triangulation of the sampler's points made by `lift` in the traits Gt,
+// against Delaunay_triangulation_2<Gt> and Triangulation_hierarchy_2 over it.
+template <class Gt, class Lift, class XY>
+void expect_traits_match(const Sampler& s, const Lift& lift, const XY& xy, const std::string& what)
+{
+  typedef typename Gt::Point_2 P;
+  const CGAL::Penrose_Delaunay_triangulation_2<Gt> pdt(s, lift);
+  ASSERT_TRUE(pdt.is_valid()) << what;
+  std::vector<Point> planar;
+  s(std::back_inserter(planar));
+  std::vector<P> points;
+  for(const Point& p : planar) points.push_back(lift(p.x(), p.y()));
+  const CGAL::Delaunay_triangulation_2<Gt> dt(points.begin(), points.end());
+  CGAL::Triangulation_hierarchy_2<CGAL::Delaunay_triangulation_2<Gt,
+    CGAL::Triangulation_data_structure_2<CGAL::Triangulation_hierarchy_vertex_base_2<
+      CGAL::Triangulation_vertex_base_2<Gt>>>>> hierarchy;
+  for(const P& p : points) hierarchy.insert(p);
+  EXPECT_EQ(pdt.number_of_vertices(), dt.number_of_vertices()) << what;
+  EXPECT_EQ(pdt.dimension(), dt.dimension()) << what;
+  const std::set<Edge_key> mine = edge_set(pdt, xy);
+  EXPECT_TRUE(mine == edge_set(dt, xy)) << what << ": edges differ from Delaunay_triangulation_2";
+  EXPECT_TRUE(mine == edge_set(hierarchy, xy)) << what << ": edges differ from Triangulation_hierarchy_2";
+}
+} // namespace
+
+// Every traits class of the issue, on the built-in and 20 random densities,
+// from a few points to a few thousand (exact number types are slow: the
+// sizes stop there; Epick goes to 10^5 above).
+TEST(Traits, EveryTraitsClassOnEveryDensity)
+{
+  typedef CGAL::Exact_predicates_exact_constructions_kernel Epeck;
+  typedef CGAL::Simple_cartesian<CGAL::Gmpq> Gmpq_kernel;
+  typedef CGAL::Projection_traits_xy_3<Epick> Terrain;
+  std::vector<std::pair<std::string, Density>> densities = {
+    {"constant", [](const Point&) { return 1.; }},
+    {"ramp", [](const Point& p) { return p.x(); }},
+    {"radial", [](const Point& p) {
+       const double r2 = (p.x() - .5) * (p.x() - .5) + (p.y() - .5) * (p.y() - .5);
+       return std::exp(-r2 / (2 * 0.04)) + 0.05; }}};
+  for(int seed = 0; seed < 20; ++seed) densities.emplace_back("random " + std::to_string(seed), random_density(seed));
+  for(const auto& d : densities)
+    for(std::size_t n : {std::size_t(12), std::size_t(300), std::size_t(2000)}) {
+      const Sampler s(unit_square, d.second, CGAL::parameters::number_of_output_points(n));
+      const std::string what = d.first + " " + std::to_string(n);
+      auto to_double_xy = [](const auto& p) { return std::make_pair(CGAL::to_double(p.x()), CGAL::to_double(p.y())); };
+      expect_traits_match<Epeck>(s, [](double x, double y) { return Epeck::Point_2(x, y); }, to_double_xy,
+                                 "Epeck, " + what);
+      expect_traits_match<Gmpq_kernel>(s, [](double x, double y) { return Gmpq_kernel::Point_2(x, y); },
+                                       to_double_xy, "Simple_cartesian<Gmpq>, " + what);
+      expect_traits_match<Terrain>(s, [](double x, double y) { return Epick::Point_3(x, y, x * x - y); },
+                                   to_double_xy, "Projection_traits_xy_3, " + what);
+    }
+}
+
 TEST(Traits, TerrainWithProjectionTraits)
 {
   typedef CGAL::Projection_traits_xy_3<Epick> Gt;
