@@ -138,16 +138,17 @@ public:
     const double by0 = (std::min)({y[0], y[1], y[2]}), by1 = (std::max)({y[0], y[1], y[2]});
     const double m = margin_factor_ * scale_[level];
     if(bx1 < xmin_ - m || bx0 > xmax_ + m || by1 < ymin_ - m || by0 > ymax_ + m) return false;
-    double imax;
-    if(bound_) {
-      const double cx0 = clamp_x(bx0), cx1 = clamp_x(bx1), cy0 = clamp_y(by0), cy1 = clamp_y(by1);
-      imax = checked(bound_(cx0, cy0, cx1, cy1), 0.5 * (cx0 + cx1), 0.5 * (cy0 + cy1))
-             * importance_per_density_;
-    } else {
-      // the centroid is probed only when the corners do not decide already
-      imax = (std::max)({importance[0], importance[1], importance[2]});
-      if(!needs_level_above(imax, level))
+    // the corners decide when they already need a finer level: the bound
+    // over the tile, or the centroid, is asked only when they do not
+    double imax = (std::max)({importance[0], importance[1], importance[2]});
+    if(!needs_level_above(imax, level)) {
+      if(bound_) {
+        const double cx0 = clamp_x(bx0), cx1 = clamp_x(bx1), cy0 = clamp_y(by0), cy1 = clamp_y(by1);
+        imax = checked(bound_(cx0, cy0, cx1, cy1), 0.5 * (cx0 + cx1), 0.5 * (cy0 + cy1))
+               * importance_per_density_;
+      } else {
         imax = this->importance((x[0] + x[1] + x[2]) / 3., (y[0] + y[1] + y[2]) / 3.);
+      }
     }
     if(!needs_level_above(imax, level)) return false;
     if(level >= max_level)
