@@ -53,24 +53,37 @@ std::set<Edge_key> edge_set(const Triangulation& t, XY xy)
 std::pair<double, double> xy_of(const Point& p) { return {p.x(), p.y()}; }
 
 // The reference: CGAL's range insertion, and the Devillers hierarchy fed one
-// point at a time, on the sampler's points.
-void expect_same_as_cgal(const Sampler& sampler, const std::string& what)
+// point at a time, on the sampler's points made by `lift` in the traits Gt;
+// `number_of_points`, if given, receives how many there are.
+template <class Gt, class Lift, class XY>
+void expect_matches_cgal(const CGAL::Penrose_Delaunay_triangulation_2<Gt>& pdt, const Sampler& s, const Lift& lift,
+                         const XY& xy, const std::string& what, std::size_t* number_of_points = nullptr)
 {
-  std::vector<Point> points;
-  sampler(std::back_inserter(points));
-  const CGAL::Penrose_Delaunay_triangulation_2<Epick> pdt(sampler);
+  typedef typename Gt::Point_2 P;
   ASSERT_TRUE(pdt.is_valid()) << what;
-  CGAL::Delaunay_triangulation_2<Epick> dt(points.begin(), points.end());
-  CGAL::Triangulation_hierarchy_2<CGAL::Delaunay_triangulation_2<Epick,
+  std::vector<Point> planar;
+  s(std::back_inserter(planar));
+  if(number_of_points != nullptr) *number_of_points = planar.size();
+  std::vector<P> points;
+  for(const Point& p : planar) points.push_back(lift(p.x(), p.y()));
+  const CGAL::Delaunay_triangulation_2<Gt> dt(points.begin(), points.end());
+  CGAL::Triangulation_hierarchy_2<CGAL::Delaunay_triangulation_2<Gt,
     CGAL::Triangulation_data_structure_2<CGAL::Triangulation_hierarchy_vertex_base_2<
-      CGAL::Triangulation_vertex_base_2<Epick>>>>> hierarchy;
-  for(const Point& p : points) hierarchy.insert(p);
+      CGAL::Triangulation_vertex_base_2<Gt>>>>> hierarchy;
+  for(const P& p : points) hierarchy.insert(p);
   EXPECT_EQ(pdt.number_of_vertices(), dt.number_of_vertices()) << what;
   EXPECT_EQ(pdt.dimension(), dt.dimension()) << what;
-  const std::set<Edge_key> mine = edge_set(pdt, xy_of);
-  EXPECT_TRUE(mine == edge_set(dt, xy_of)) << what << ": edges differ from Delaunay_triangulation_2";
-  EXPECT_TRUE(mine == edge_set(hierarchy, xy_of)) << what << ": edges differ from Triangulation_hierarchy_2";
-  EXPECT_LE(double(pdt.number_of_fallbacks()), 0.001 * double(points.size()) + 0.5) << what;
+  const std::set<Edge_key> mine = edge_set(pdt, xy);
+  EXPECT_TRUE(mine == edge_set(dt, xy)) << what << ": edges differ from Delaunay_triangulation_2";
+  EXPECT_TRUE(mine == edge_set(hierarchy, xy)) << what << ": edges differ from Triangulation_hierarchy_2";
+}
+
+void expect_same_as_cgal(const Sampler& sampler, const std::string& what)
+{
+  const CGAL::Penrose_Delaunay_triangulation_2<Epick> pdt(sampler);
+  std::size_t n = 0;
+  expect_matches_cgal(pdt, sampler, [](double x, double y) { return Point(x, y); }, xy_of, what, &n);
+  EXPECT_LE(double(pdt.number_of_fallbacks()), 0.001 * double(n) + 0.5) << what;
 }
 
 const Epick::Iso_rectangle_2 unit_square(0, 0, 1, 1);
@@ -273,28 +286,10 @@ TEST(Traits, EpeckAndGmpqMatchCgal)
 }
 
 namespace {
-// The triangulation of the sampler's points made by `lift` in the traits Gt,
-// against Delaunay_triangulation_2<Gt> and Triangulation_hierarchy_2 over it.
 template <class Gt, class Lift, class XY>
 void expect_traits_match(const Sampler& s, const Lift& lift, const XY& xy, const std::string& what)
 {
-  typedef typename Gt::Point_2 P;
-  const CGAL::Penrose_Delaunay_triangulation_2<Gt> pdt(s, lift);
-  ASSERT_TRUE(pdt.is_valid()) << what;
-  std::vector<Point> planar;
-  s(std::back_inserter(planar));
-  std::vector<P> points;
-  for(const Point& p : planar) points.push_back(lift(p.x(), p.y()));
-  const CGAL::Delaunay_triangulation_2<Gt> dt(points.begin(), points.end());
-  CGAL::Triangulation_hierarchy_2<CGAL::Delaunay_triangulation_2<Gt,
-    CGAL::Triangulation_data_structure_2<CGAL::Triangulation_hierarchy_vertex_base_2<
-      CGAL::Triangulation_vertex_base_2<Gt>>>>> hierarchy;
-  for(const P& p : points) hierarchy.insert(p);
-  EXPECT_EQ(pdt.number_of_vertices(), dt.number_of_vertices()) << what;
-  EXPECT_EQ(pdt.dimension(), dt.dimension()) << what;
-  const std::set<Edge_key> mine = edge_set(pdt, xy);
-  EXPECT_TRUE(mine == edge_set(dt, xy)) << what << ": edges differ from Delaunay_triangulation_2";
-  EXPECT_TRUE(mine == edge_set(hierarchy, xy)) << what << ": edges differ from Triangulation_hierarchy_2";
+  expect_matches_cgal(CGAL::Penrose_Delaunay_triangulation_2<Gt>(s, lift), s, lift, xy, what);
 }
 } // namespace
 

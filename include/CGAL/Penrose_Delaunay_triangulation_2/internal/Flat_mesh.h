@@ -17,8 +17,8 @@
 #include <vector>
 
 // Walks over a flat mesh are bound by memory: they fetch what they will
-// read a few steps ahead. A macro, not a function: GCC deletes calls to a function whose only
-// effect is a prefetch.
+// read a few steps ahead. A macro, not a function: GCC deletes calls to a
+// function whose only effect is a prefetch.
 #if defined(__GNUC__)
 #  define CGAL_PENROSE_PREFETCH(p) __builtin_prefetch(p)
 #else
