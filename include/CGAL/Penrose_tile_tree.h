@@ -165,7 +165,8 @@ private:
       const Vertex& v = vertices_[tiles_[t].vertices[i]];
       x[i] = v.x; y[i] = v.y; importance[i] = v.importance;
     }
-    return context_.should_refine(tiles_[t].level, x, y, importance);
+    const Tile& tt = tiles_[t];
+    return context_.should_refine(tt.level, internal::Penrose::code_threshold(tt.f_code, tt.level), x, y, importance);
   }
 
   // A same-level neighbour that is already subdivided, or null_index.

@@ -362,6 +362,35 @@ TEST(Sampler, ConservativeBoundFindsThinFeatures)
   (void)line;
 }
 
+TEST(Sampler, ThresholdPruningDropsNoActiveSample)
+{
+  // Any valid bound gives the exact set of active samples. The loosest one
+  // (the global maximum) subdivides every tile whose subtree has a threshold
+  // under it; a tight one prunes far more, and must lose nothing.
+  auto density = [](const Point& p) {
+    const double dx = p.x() - 0.3, dy = p.y() - 0.6;
+    return 1.2 + std::sin(37. * p.x()) * std::cos(29. * p.y()) + 3. * std::exp(-(dx * dx + dy * dy) / 0.004);
+  };
+  const double global_max = 5.2, lipschitz = 37. + 29. + 3. * 2. / std::sqrt(2. * 0.004) * std::exp(-0.5);
+  auto tight = [&](const Epick::Iso_rectangle_2& b) {
+    const Point c((b.xmin() + b.xmax()) / 2., (b.ymin() + b.ymax()) / 2.);
+    const double reach = std::hypot(b.xmax() - b.xmin(), b.ymax() - b.ymin()) / 2.;
+    return std::min(global_max, density(c) + lipschitz * reach);
+  };
+  auto loose = [&](const Epick::Iso_rectangle_2&) { return global_max; };
+  for(std::size_t n : {300, 3000, 20000}) {
+    const Sampler with_tight(unit_square, density,
+                             CGAL::parameters::density_upper_bound(tight).number_of_output_points(n));
+    const Sampler with_loose(unit_square, density,
+                             CGAL::parameters::density_upper_bound(loose).number_of_output_points(n));
+    std::vector<Point> a, b;
+    with_tight(std::back_inserter(a));
+    with_loose(std::back_inserter(b));
+    EXPECT_EQ(a, b) << n << " points";
+    EXPECT_LT(with_tight.tile_tree().tiles().size(), with_loose.tile_tree().tiles().size());
+  }
+}
+
 namespace {
 // The smallest model of PenroseImportanceSamplerTraits_2.
 struct Minimal_traits

@@ -76,9 +76,10 @@ public:
     const Tile root = {0, 0, {{0, 1, 2}}, m_.create_face(0, 1, 2), FAT_F, 15, 0};
     double rx[3], ry[3];
     for(int i = 0; i < 3; ++i) { rx[i] = m_.points[i].x(); ry[i] = m_.points[i].y(); }
-    if(c_.should_refine(0, rx, ry, importance_.data())) frontier_.push_back(root);
-    // about 1.9 tiles are subdivided per point (1.88 for a constant density at 10^6)
-    const double expected_tiles = 1.9 * expected_points + 1.;
+    if(c_.should_refine(0, 0, rx, ry, importance_.data())) frontier_.push_back(root);
+    // about 1.5 tiles are subdivided per point (1.26 to 1.59 for the constant
+    // density and the ramp from 10^5 to 4 x 10^6)
+    const double expected_tiles = 1.5 * expected_points + 1.;
     std::size_t tiles_done = 0;
     auto report = [&](double tiles) { return !progress || progress((std::min)(0.99, tiles / expected_tiles)); };
     for(int level = 0; !frontier_.empty(); ++level) {
@@ -216,7 +217,8 @@ private:
         const int j = cr.corners[i];
         cx[i] = vx[j]; cy[i] = vy[j]; ci[i] = vi[j];
       }
-      if(!c_.should_refine(child_level, cx, cy, ci)) continue;
+      const std::uint64_t threshold = t.threshold + pair_weight(cr.code_pair, child_level);
+      if(!c_.should_refine(child_level, threshold, cx, cy, ci)) continue;
       Tile child;
       for(int i = 0; i < 3; ++i) {
         const int j = cr.corners[i];
@@ -225,7 +227,7 @@ private:
         child.corners[i] = v[j];
       }
       child.code = t.code * 4 + cr.code_pair;
-      child.threshold = t.threshold + pair_weight(cr.code_pair, child_level);
+      child.threshold = threshold;
       child.face = null;
       child.type = cr.type;
       child.direction = add_direction(t.direction, cr.direction_step);

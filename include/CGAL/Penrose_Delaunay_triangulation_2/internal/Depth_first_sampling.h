@@ -43,7 +43,7 @@ void for_each_sample_depth_first(const Sampling_context& context, Visitor&& visi
   double x[5], y[5], importance[5];
   while(top > 0) {
     const Node t = stack[--top];
-    if(!context.should_refine(t.level, t.x, t.y, t.importance)) continue;
+    if(!context.should_refine(t.level, t.threshold, t.x, t.y, t.importance)) continue;
     const Subdivision_rule& r = rule(t.type);
     for(int i = 0; i < 3; ++i) { x[i] = t.x[i]; y[i] = t.y[i]; importance[i] = t.importance[i]; }
     const int child_level = t.level + 1;

@@ -52,10 +52,13 @@ inline std::uint64_t pair_weight(std::uint8_t pair, int level)
   return (pair & 2 ? t.fib[2 * level] : 0) + (pair & 1 ? t.fib[2 * level + 1] : 0);
 }
 
-// Whether a tile of level `level` must be subdivided for importance `i`.
-inline bool needs_level_above(double i, int level)
+// Fibonacci value of the F-code of a tile of level `level`: the sum of the
+// weights of its pairs, the least threshold of the samples born below it.
+inline std::uint64_t code_threshold(std::uint64_t code, int level)
 {
-  return level == 0 ? i > 0. : i >= fibonacci().level_importance[level + 1];
+  std::uint64_t t = 0;
+  for(int l = level; l >= 1; --l, code >>= 2) t += pair_weight(std::uint8_t(code & 3u), l);
+  return t;
 }
 
 // The level required by importance i (C.5 of the sampler facts).

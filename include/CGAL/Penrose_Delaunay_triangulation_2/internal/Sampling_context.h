@@ -131,17 +131,25 @@ public:
     return checked(density_(cx, cy), cx, cy);
   }
 
-  bool should_refine(int level, const double* x, const double* y, const double* importance) const
+  // Whether a tile of level `level` whose F-code has Fibonacci value
+  // `threshold` is subdivided: only if a sample of its subtree can be active.
+  // Every sample born below it has a threshold of at least `threshold` +
+  // F(2 level + 2) (C.7), which is also above the least importance that
+  // needs the level (C.5): a tile whose thresholds are all out of reach is a
+  // leaf, which spares the idle last level just past a level boundary.
+  bool should_refine(int level, std::uint64_t threshold,
+                     const double* x, const double* y, const double* importance) const
   {
     if(level < uniform_levels) return true;
     const double bx0 = (std::min)({x[0], x[1], x[2]}), bx1 = (std::max)({x[0], x[1], x[2]});
     const double by0 = (std::min)({y[0], y[1], y[2]}), by1 = (std::max)({y[0], y[1], y[2]});
     const double m = margin_factor_ * scale_[level];
     if(bx1 < xmin_ - m || bx0 > xmax_ + m || by1 < ymin_ - m || by0 > ymax_ + m) return false;
-    // the corners decide when they already need a finer level: the bound
-    // over the tile, or the centroid, is asked only when they do not
+    const double least = static_cast<double>(threshold + fibonacci().fib[2 * level + 2]);
+    // the corners decide when they already reach a threshold: the bound over
+    // the tile, or the centroid, is asked only when they do not
     double imax = (std::max)({importance[0], importance[1], importance[2]});
-    if(!needs_level_above(imax, level)) {
+    if(!(imax >= least)) {
       if(bound_) {
         const double cx0 = clamp_x(bx0), cx1 = clamp_x(bx1), cy0 = clamp_y(by0), cy1 = clamp_y(by1);
         imax = checked(bound_(cx0, cy0, cx1, cy1), 0.5 * (cx0 + cx1), 0.5 * (cy0 + cy1))
@@ -150,7 +158,7 @@ public:
         imax = this->importance((x[0] + x[1] + x[2]) / 3., (y[0] + y[1] + y[2]) / 3.);
       }
     }
-    if(!needs_level_above(imax, level)) return false;
+    if(!(imax >= least)) return false;
     if(level >= max_level)
       throw std::length_error("Penrose_importance_sampler: the density needs more than "
                               + std::to_string(max_level) + " subdivision levels");
