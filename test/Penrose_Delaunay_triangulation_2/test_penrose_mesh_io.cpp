@@ -25,6 +25,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <functional>
 #include <set>
@@ -37,11 +38,31 @@ namespace {
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 namespace IO = CGAL::IO;
 
+std::set<std::string>& temporary_files()
+{
+  static std::set<std::string> files;
+  return files;
+}
+
+// The temporary files go when the tests of the process end.
+struct Remove_temporary_files : ::testing::Environment
+{
+  void TearDown() override
+  {
+    for(const std::string& f : temporary_files()) std::remove(f.c_str());
+  }
+};
+::testing::Environment* const remove_temporary_files =
+  ::testing::AddGlobalTestEnvironment(new Remove_temporary_files);
+
 // A file of the running test: ctest runs the tests in parallel processes.
 std::string temp(const std::string& name)
 {
   const ::testing::TestInfo* test = ::testing::UnitTest::GetInstance()->current_test_info();
-  return ::testing::TempDir() + "penrose_io_" + test->test_suite_name() + "_" + test->name() + "_" + name;
+  const std::string file =
+    ::testing::TempDir() + "penrose_io_" + test->test_suite_name() + "_" + test->name() + "_" + name;
+  temporary_files().insert(file);
+  return file;
 }
 
 void write_file(const std::string& file, const std::string& bytes)
