@@ -157,7 +157,7 @@ static std::vector<float> relax_and_average(const Options& o, const P::Correctio
         const double dx = p[i].x() - rx, dy = p[i].y() - ry;
         const double sl = c.scale(r.leaf_level);
         const int d = r.leaf_direction, e = (d + 5) % 20;
-        const unsigned is = P::fibonacci_value(r.leaf_code & ((1u << o.structural_bits) - 1), o.structural_bits);
+        const unsigned is = unsigned(P::fibonacci_value(r.leaf_code & ((1u << o.structural_bits) - 1), o.structural_bits));
         const unsigned iv = P::importance_index(r.importance, o.bins);
         const std::size_t k = iv * columns + is;
         const double w = pushed[i] ? push_weight : 1.;

@@ -276,25 +276,24 @@ private:
         for(int i = 0; i < 3; ++i)
           if(m.faces[f].n[i] == Flat_mesh::null) boundary.push_back({f, Index(i)});
     // fan faces (b, a, w[e]) outside each boundary edge a -> b
-    std::vector<std::array<Index, 3>> outer;  // (face, vertex a, vertex b)
+    std::vector<Index> outer;
     for(const auto& fe : boundary) {
       const Index f = fe[0]; const int i = int(fe[1]);
       const Index a = m.faces[f].v[Flat_mesh::ccw(i)], b = m.faces[f].v[Flat_mesh::cw(i)];
       const int e = root_edge_of(a, b);
       const Index g = m.create_face(b, a, w[e]);
       m.link(g, 2, f, i);
-      outer.push_back({g, a, b});
+      outer.push_back(g);
     }
     // corner faces (w[e-1], w[e], corner e)
     for(int e = 0; e < 3; ++e) {
-      const Index g = m.create_face(w[(e + 2) % 3], w[e], Index(e));
-      outer.push_back({g, Flat_mesh::null, Flat_mesh::null});
+      outer.push_back(m.create_face(w[(e + 2) % 3], w[e], Index(e)));
     }
     // glue the outer faces to each other along their shared edges
     for(std::size_t p = 0; p < outer.size(); ++p)
       for(std::size_t q = p + 1; q < outer.size(); ++q)
         for(int i = 0; i < 3; ++i) {
-          const Index f = outer[p][0], g = outer[q][0];
+          const Index f = outer[p], g = outer[q];
           if(m.faces[f].n[i] != Flat_mesh::null) continue;
           const int j = m.edge_index(g, m.faces[f].v[Flat_mesh::cw(i)], m.faces[f].v[Flat_mesh::ccw(i)]);
           if(j >= 0) m.link(f, i, g, j);

@@ -166,7 +166,7 @@ private:
       x[i] = v.x; y[i] = v.y; importance[i] = v.importance;
     }
     const Tile& tt = tiles_[t];
-    return context_.should_refine(tt.level, internal::Penrose::code_threshold(tt.f_code, tt.level), x, y, importance);
+    return context_.should_refine(tt.level, internal::Penrose::fibonacci_value(tt.f_code, 2 * tt.level), x, y, importance);
   }
 
   // A same-level neighbour that is already subdivided, or null_index.

@@ -52,15 +52,6 @@ inline std::uint64_t pair_weight(std::uint8_t pair, int level)
   return (pair & 2 ? t.fib[2 * level] : 0) + (pair & 1 ? t.fib[2 * level + 1] : 0);
 }
 
-// Fibonacci value of the F-code of a tile of level `level`: the sum of the
-// weights of its pairs, the least threshold of the samples born below it.
-inline std::uint64_t code_threshold(std::uint64_t code, int level)
-{
-  std::uint64_t t = 0;
-  for(int l = level; l >= 1; --l, code >>= 2) t += pair_weight(std::uint8_t(code & 3u), l);
-  return t;
-}
-
 // The level required by importance i (C.5 of the sampler facts).
 inline int required_level(double i)
 {
@@ -72,12 +63,13 @@ inline int required_level(double i)
 }
 
 // Fibonacci value of the `bits` newest bits of a code; the oldest weighs 1.
-inline unsigned fibonacci_value(std::uint64_t code, int bits)
+// With all 2 l bits of a tile of level l, it is the tile's threshold.
+inline std::uint64_t fibonacci_value(std::uint64_t code, int bits)
 {
   const Fibonacci_tables& t = fibonacci();
-  unsigned v = 0;
+  std::uint64_t v = 0;
   for(int b = 0; b < bits; ++b)            // bit b (0 = newest) weighs F(bits + 1 - b)
-    if(code >> b & 1u) v += static_cast<unsigned>(t.fib[bits + 1 - b]);
+    if(code >> b & 1u) v += t.fib[bits + 1 - b];
   return v;
 }
 

@@ -96,6 +96,13 @@ public:
     if(g != null) faces[g].n[j] = f;
   }
 
+  // Face f takes over g (or null) as its neighbour i from face `old`.
+  void inherit_neighbor(Index f, int i, Index g, Index old)
+  {
+    faces[f].n[i] = g;
+    if(g != null) faces[g].n[index_of_neighbor(g, old)] = f;
+  }
+
   int index_of_vertex(Index f, Index v) const
   {
     const Face& F = faces[f];
@@ -139,11 +146,10 @@ public:
     // f becomes (apex, a, m); g becomes (apex, m, b)
     const Index g = create_face(apex, m, b);
     reset_face(f, apex, a, m);
-    link(g, 0, null, 0);              // the half-edge m-b: set by the caller
-    link(g, 1, F.n[ccw(i)], F.n[ccw(i)] == null ? 0 : index_of_neighbor(F.n[ccw(i)], f));
+    // the half-edges m-b (g's edge 0) and a-m (f's edge 0) are the caller's
+    inherit_neighbor(g, 1, F.n[ccw(i)], f);
     link(g, 2, f, 1);                 // shared edge apex-m
-    link(f, 2, F.n[cw(i)], F.n[cw(i)] == null ? 0 : index_of_neighbor(F.n[cw(i)], f));
-    // f's edge a-m (index 0) is set by the caller too
+    faces[f].n[2] = F.n[cw(i)];       // which still borders f
     vertex_face[apex] = f; vertex_face[a] = f; vertex_face[m] = f; vertex_face[b] = g;
     return g;
   }

@@ -221,18 +221,12 @@ private:
     for(const auto& e : ears_) {
       const int p = e[0], q = e[1], r = e[2];
       const Index f = m_.create_face(ring_[p], ring_[q], ring_[r]);
-      glue(f, 2, side[p]);  // edge p -> q
-      glue(f, 0, side[q]);  // edge q -> r
-      if(next[q] == r && next[r] == p) { glue(f, 1, side[r]); break; }  // the last triangle
+      m_.link(f, 2, side[p].first, side[p].second);  // edge p -> q
+      m_.link(f, 0, side[q].first, side[q].second);  // edge q -> r
+      if(next[q] == r && next[r] == p) { m_.link(f, 1, side[r].first, side[r].second); break; }  // the last triangle
       side[p] = {f, 1};     // the new polygon edge p -> r
       next[p] = r;
     }
-  }
-
-  void glue(Index f, int i, const std::pair<Index, int>& other)
-  {
-    m_.faces[f].n[i] = other.first;
-    if(other.first != null) m_.faces[other.first].n[other.second] = f;
   }
 
   // Walks from face f to the face containing p. on_edge is set to the
@@ -264,12 +258,12 @@ private:
     const Index g = m_.create_face(v, F.v[1], F.v[2]);
     const Index h = m_.create_face(F.v[0], v, F.v[2]);
     m_.reset_face(f, F.v[0], F.v[1], v);
-    glue(g, 0, {F.n[0], F.n[0] == null ? 0 : m_.index_of_neighbor(F.n[0], f)});
-    glue(h, 1, {F.n[1], F.n[1] == null ? 0 : m_.index_of_neighbor(F.n[1], f)});
-    glue(f, 2, {F.n[2], F.n[2] == null ? 0 : m_.index_of_neighbor(F.n[2], f)});
-    glue(g, 1, {h, 0});
-    glue(g, 2, {f, 0});
-    glue(h, 2, {f, 1});
+    m_.inherit_neighbor(g, 0, F.n[0], f);
+    m_.inherit_neighbor(h, 1, F.n[1], f);
+    m_.faces[f].n[2] = F.n[2];  // which still borders f
+    m_.link(g, 1, h, 0);
+    m_.link(g, 2, f, 0);
+    m_.link(h, 2, f, 1);
     m_.vertex_face[F.v[0]] = f; m_.vertex_face[F.v[1]] = f; m_.vertex_face[F.v[2]] = g;
     m_.vertex_face[v] = f;
   }
@@ -283,8 +277,8 @@ private:
     const int j = m_.edge_index(g, b, a);
     const Index f2 = m_.split_face_on_edge(f, i, v);  // f: a-v, f2: v-b
     const Index g2 = m_.split_face_on_edge(g, j, v);  // g: b-v, g2: v-a
-    glue(f, 0, {g2, 0});
-    glue(f2, 0, {g, 0});
+    m_.link(f, 0, g2, 0);
+    m_.link(f2, 0, g, 0);
     return true;
   }
 

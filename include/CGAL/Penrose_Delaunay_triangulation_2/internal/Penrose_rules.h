@@ -105,6 +105,14 @@ inline const std::array<Subdivision_rule, 4>& subdivision_rules()
 
 inline const Subdivision_rule& rule(Tile_type t) { return subdivision_rules()[t]; }
 
+// Whether corner index a of rule r (0..2 the corners, 3.. the new vertices)
+// lies on the tile's edge e, from corner e to corner e + 1.
+inline bool lies_on_edge(const Subdivision_rule& r, int a, int e)
+{
+  if(a < 3) return a == e || a == (e + 1) % 3;
+  return r.new_vertices[a - 3].edge == e;
+}
+
 inline std::uint8_t add_direction(std::uint8_t d, std::uint8_t step)
 {
   return static_cast<std::uint8_t>((d + step) % 20);

@@ -89,7 +89,7 @@ public:
     importance_bins_ = table_ ? table_->importance_bins : 21u;
     structural_index_.resize(std::size_t(1) << structural_bits_);
     for(std::size_t c = 0; c < structural_index_.size(); ++c)
-      structural_index_[c] = fibonacci_value(c, structural_bits_);
+      structural_index_[c] = unsigned(fibonacci_value(c, structural_bits_));
   }
 
   static void check_region(double xmin, double ymin, double xmax, double ymax)

@@ -68,24 +68,20 @@ public:
 private:
   void set(Tile_type t, unsigned mask, std::initializer_list<Split_pattern::Triangle> triangles)
   {
+    const Subdivision_rule& r = rule(t);
     Split_pattern& p = patterns_[t][mask];
     p.number_of_triangles = std::uint8_t(triangles.size());
     p.number_of_segments = {{1, 1, 1}};
-    for(int k = 0; k < r_count(t); ++k)
-      if(mask >> k & 1u) p.number_of_segments[rule(t).new_vertices[k].edge] = 2;
+    for(int k = 0; k < r.number_of_new_vertices; ++k)
+      if(mask >> k & 1u) p.number_of_segments[r.new_vertices[k].edge] = 2;
     std::copy(triangles.begin(), triangles.end(), p.triangles.begin());
-    const Subdivision_rule& r = rule(t);
-    auto on_edge = [&](int a, int e) {
-      if(a < 3) return a == e || a == (e + 1) % 3;
-      return r.new_vertices[a - 3].edge == e;
-    };
     for(int f = 0; f < p.number_of_triangles; ++f)
       for(int j = 0; j < 3; ++j) {
         const int a = p.triangles[f].corners[(j + 1) % 3], b = p.triangles[f].corners[(j + 2) % 3];
         Split_pattern::Edge_place& place = p.places[f][j];
         place.parent_edge = -1;
         for(int e = 0; e < 3; ++e)
-          if(on_edge(a, e) && on_edge(b, e)) {
+          if(lies_on_edge(r, a, e) && lies_on_edge(r, b, e)) {
             place.parent_edge = std::int8_t(e);
             place.segment = (a == e) ? 0 : 1;
           }
@@ -101,8 +97,6 @@ private:
             }
       }
   }
-
-  static int r_count(Tile_type t) { return rule(t).number_of_new_vertices; }
 
   std::array<std::array<Split_pattern, 4>, 4> patterns_;
 };

@@ -60,7 +60,7 @@ struct Tile_edge_tables
           Child_edge_place& p = places[t][c][j];
           p.on_parent_edge = false;
           for(int e = 0; e < 3; ++e)
-            if(on_edge(r, t, a, e) && on_edge(r, t, b, e)) {
+            if(lies_on_edge(r, a, e) && lies_on_edge(r, b, e)) {
               p.on_parent_edge = true;
               p.parent_edge = std::uint8_t(e);
               p.segment = (a == e) ? 0 : 1;
@@ -81,14 +81,6 @@ struct Tile_edge_tables
             }
           }
     }
-  }
-
-private:
-  // whether corner index a (0..2 corners, 3.. new vertices) lies on parent edge e
-  bool on_edge(const Subdivision_rule& r, int t, int a, int e) const
-  {
-    if(a < 3) return a == e || a == (e + 1) % 3;
-    return new_vertex_on_edge[t][e] == a - 3 && r.new_vertices[a - 3].edge == e;
   }
 };
 
