@@ -23,16 +23,13 @@
 
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Triangulation_hierarchy_2.h>
 
-#include <sys/resource.h>
+#include "benchmark_support.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <functional>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -44,21 +41,8 @@ typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef K::Point_2 Point;
 typedef CGAL::Penrose_importance_sampler<K> Sampler;
 typedef CGAL::Delaunay_triangulation_2<K> Dt;
-typedef CGAL::Triangulation_hierarchy_2<CGAL::Delaunay_triangulation_2<K,
-  CGAL::Triangulation_data_structure_2<CGAL::Triangulation_hierarchy_vertex_base_2<
-    CGAL::Triangulation_vertex_base_2<K>>>>> Hierarchy;
-
-double now()
-{
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
-
-double peak_bytes()
-{
-  rusage u;
-  getrusage(RUSAGE_SELF, &u);
-  return double(u.ru_maxrss) * 1024.;
-}
+typedef benchmark_support::Hierarchy<K> Hierarchy;
+using benchmark_support::now;
 
 // A terrain-like density: the absolute Laplacian of a few hills and ridges,
 // high on slopes' bends and low on flats, plus a floor.
@@ -75,18 +59,18 @@ double terrain_density(const Point& p)
   return 5. + std::abs(lap + 30. * std::sin(9 * p.x()) * std::sin(7 * p.y()));
 }
 
-std::unique_ptr<Sampler> make_sampler(const std::string& input, double n, const std::string& image)
+Sampler make_sampler(const std::string& input, double n, const std::string& image)
 {
   const K::Iso_rectangle_2 unit(0, 0, 1, 1);
   auto np = CGAL::parameters::number_of_output_points(std::size_t(n)).maximum_number(std::size_t(1e9));
-  if(input == "constant") return std::make_unique<Sampler>(unit, [](const Point&) { return 1.; }, np);
-  if(input == "ramp") return std::make_unique<Sampler>(unit, [](const Point& p) { return p.x(); }, np);
-  if(input == "terrain") return std::make_unique<Sampler>(unit, terrain_density, np);
+  if(input == "constant") return Sampler(unit, [](const Point&) { return 1.; }, np);
+  if(input == "ramp") return Sampler(unit, [](const Point& p) { return p.x(); }, np);
+  if(input == "terrain") return Sampler(unit, terrain_density, np);
   if(input == "image") {
     CGAL::IO::Luminance_image img = CGAL::IO::read_luminance_image(image);
     for(double& v : img.values) v += 0.02;  // dark regions get a few points too
     auto d = std::make_shared<CGAL::Raster_density_2<K>>(img.width, img.height, std::move(img.values), unit);
-    return std::make_unique<Sampler>(unit, [d](const Point& p) { return (*d)(p); },
+    return Sampler(unit, [d](const Point& p) { return (*d)(p); },
       CGAL::parameters::density_upper_bound([d](const K::Iso_rectangle_2& b) { return d->upper_bound(b); }, np));
   }
   throw std::invalid_argument("unknown input " + input);
@@ -141,26 +125,25 @@ int main(int argc, char** argv)
   const int repetitions = std::max(1, std::atoi(argv[4]));
   const std::string image = argc > 5 ? argv[5] : "data/test_image.png";
   try {
-    const std::unique_ptr<Sampler> sampler = make_sampler(input, n, image);
+    const Sampler sampler = make_sampler(input, n, image);
     std::vector<Point> points;
-    sampler->operator()(std::back_inserter(points));
-    const double before = peak_bytes();
+    sampler(std::back_inserter(points));
+    const double before = benchmark_support::peak_resident_bytes();
     double extra = 0.;
     std::vector<double> t;
     for(int r = 0; r < repetitions; ++r) {
       const double t0 = now();
-      const std::size_t made = run(method, *sampler, points);
+      const std::size_t made = run(method, sampler, points);
       t.push_back(now() - t0);
       // the peak of one construction: later repetitions can add the
       // allocator's fragmentation to it
-      if(r == 0) extra = std::max(0., peak_bytes() - before);
+      if(r == 0) extra = std::max(0., benchmark_support::peak_resident_bytes() - before);
       if(made != points.size()) {
         std::cerr << method << ": " << made << " vertices for " << points.size() << " points\n";
         return 1;
       }
     }
-    std::sort(t.begin(), t.end());
-    const double median = t[t.size() / 2];
+    const double median = benchmark_support::median(t);
     std::printf("%s,%zu,%s,%.6g,%.6g,%.6g\n", input.c_str(), points.size(), method.c_str(), median,
                 median / double(points.size()) * 1e9, extra / double(points.size()));
   } catch(const std::exception& e) {

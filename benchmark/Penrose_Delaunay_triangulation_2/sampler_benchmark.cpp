@@ -15,10 +15,9 @@
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
-#include <sys/resource.h>
+#include "benchmark_support.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
@@ -29,16 +28,8 @@ typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::Penrose_importance_sampler<K> Sampler;
 namespace Q = CGAL::Penrose_quality;
 
-static double now()
-{
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
-
-static double median(std::vector<double> v)
-{
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
-}
+using benchmark_support::median;
+using benchmark_support::now;
 
 static std::vector<K::Point_2> sample(double n, double* seconds = nullptr, bool correct = true)
 {
@@ -76,10 +67,9 @@ static int speed(double n, int runs)
 static int memory(double n)
 {
   const std::vector<K::Point_2> p = sample(n);
-  rusage u;
-  getrusage(RUSAGE_SELF, &u);
-  std::cout << p.size() << " points, peak resident " << u.ru_maxrss * 1024. << " bytes, "
-            << u.ru_maxrss * 1024. / p.size() << " bytes per point\n";
+  const double peak = benchmark_support::peak_resident_bytes();
+  std::cout << p.size() << " points, peak resident " << peak << " bytes, "
+            << peak / p.size() << " bytes per point\n";
   return 0;
 }
 

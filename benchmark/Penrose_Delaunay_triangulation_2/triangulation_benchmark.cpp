@@ -20,12 +20,10 @@
 
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Triangulation_hierarchy_2.h>
 
-#include <sys/resource.h>
+#include "benchmark_support.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cstdlib>
 #include <iostream>
 #include <string>
@@ -36,20 +34,9 @@ typedef K::Point_2 Point;
 typedef CGAL::Penrose_importance_sampler<K> Sampler;
 typedef CGAL::Penrose_Delaunay_triangulation_2<K> Pdt;
 typedef CGAL::Delaunay_triangulation_2<K> Dt;
-typedef CGAL::Triangulation_hierarchy_2<CGAL::Delaunay_triangulation_2<K,
-  CGAL::Triangulation_data_structure_2<CGAL::Triangulation_hierarchy_vertex_base_2<
-    CGAL::Triangulation_vertex_base_2<K>>>>> Hierarchy;
-
-static double now()
-{
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
-
-static double median(std::vector<double> v)
-{
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
-}
+typedef benchmark_support::Hierarchy<K> Hierarchy;
+using benchmark_support::median;
+using benchmark_support::now;
 
 static Sampler make_sampler(double n, const std::string& input)
 {
@@ -114,10 +101,9 @@ static int memory(const std::string& which, double n)
     dt.insert(points.begin(), points.end());
     count = dt.number_of_vertices();
   }
-  rusage u;
-  getrusage(RUSAGE_SELF, &u);
-  std::cout << which << ": " << count << " points, peak resident " << u.ru_maxrss * 1024. << " bytes, "
-            << u.ru_maxrss * 1024. / count << " bytes per point\n";
+  const double peak = benchmark_support::peak_resident_bytes();
+  std::cout << which << ": " << count << " points, peak resident " << peak << " bytes, "
+            << peak / count << " bytes per point\n";
   return 0;
 }
 

@@ -78,12 +78,25 @@ void expect_matches_cgal(const CGAL::Penrose_Delaunay_triangulation_2<Gt>& pdt, 
   EXPECT_TRUE(mine == edge_set(hierarchy, xy)) << what << ": edges differ from Triangulation_hierarchy_2";
 }
 
-void expect_same_as_cgal(const Sampler& sampler, const std::string& what)
+// Returns the number of points and the dimension of the triangulation.
+std::pair<std::size_t, int> expect_same_as_cgal(const Sampler& sampler, const std::string& what)
 {
   const CGAL::Penrose_Delaunay_triangulation_2<Epick> pdt(sampler);
   std::size_t n = 0;
   expect_matches_cgal(pdt, sampler, [](double x, double y) { return Point(x, y); }, xy_of, what, &n);
   EXPECT_LE(double(pdt.number_of_fallbacks()), 0.001 * double(n) + 0.5) << what;
+  return {n, pdt.dimension()};
+}
+
+// The built-in densities of penrose_mesh, on the unit square.
+std::vector<std::pair<std::string, Density>> builtin_densities()
+{
+  return {
+    {"constant", [](const Point&) { return 1.; }},
+    {"ramp", [](const Point& p) { return p.x(); }},
+    {"radial", [](const Point& p) {
+       const double r2 = (p.x() - .5) * (p.x() - .5) + (p.y() - .5) * (p.y() - .5);
+       return std::exp(-r2 / (2 * 0.04)) + 0.05; }}};
 }
 
 const Epick::Iso_rectangle_2 unit_square(0, 0, 1, 1);
@@ -111,13 +124,7 @@ Density random_density(int seed)
 
 TEST(Triangulation, BuiltInDensitiesMatchCgal)
 {
-  const std::vector<std::pair<std::string, Density>> densities = {
-    {"constant", [](const Point&) { return 1.; }},
-    {"ramp", [](const Point& p) { return p.x(); }},
-    {"radial", [](const Point& p) {
-       const double r2 = (p.x() - .5) * (p.x() - .5) + (p.y() - .5) * (p.y() - .5);
-       return std::exp(-r2 / (2 * 0.04)) + 0.05; }}};
-  for(const auto& d : densities)
+  for(const auto& d : builtin_densities())
     for(std::size_t n : {std::size_t(10), std::size_t(300), std::size_t(5000), std::size_t(100000)})
       expect_same_as_cgal(Sampler(unit_square, d.second, CGAL::parameters::number_of_output_points(n)),
                           d.first + " " + std::to_string(n));
@@ -170,13 +177,9 @@ TEST(Triangulation, FewPointsHaveCgalsDimension)
     const double scale = 0.05 * std::pow(1.07, k);
     const Sampler s(unit_square, [](const Point& p) { return 1. + p.x(); },
                     CGAL::parameters::density_control_factor(scale));
-    std::vector<Point> points;
-    s(std::back_inserter(points));
-    seen.insert(points.size());
-    expect_same_as_cgal(s, "scale " + std::to_string(scale));
-    const CGAL::Penrose_Delaunay_triangulation_2<Epick> pdt(s);
-    const int expected_dimension = points.size() < 3 ? int(points.size()) - 1 : 2;
-    if(points.size() < 3) EXPECT_EQ(pdt.dimension(), expected_dimension);
+    const std::pair<std::size_t, int> made = expect_same_as_cgal(s, "scale " + std::to_string(scale));
+    seen.insert(made.first);
+    if(made.first < 3) EXPECT_EQ(made.second, int(made.first) - 1);
   }
   EXPECT_TRUE(seen.count(0) && seen.count(1) && seen.count(2));
   // a density that is zero everywhere
@@ -301,12 +304,7 @@ TEST(Traits, EveryTraitsClassOnEveryDensity)
   typedef CGAL::Exact_predicates_exact_constructions_kernel Epeck;
   typedef CGAL::Simple_cartesian<CGAL::Gmpq> Gmpq_kernel;
   typedef CGAL::Projection_traits_xy_3<Epick> Terrain;
-  std::vector<std::pair<std::string, Density>> densities = {
-    {"constant", [](const Point&) { return 1.; }},
-    {"ramp", [](const Point& p) { return p.x(); }},
-    {"radial", [](const Point& p) {
-       const double r2 = (p.x() - .5) * (p.x() - .5) + (p.y() - .5) * (p.y() - .5);
-       return std::exp(-r2 / (2 * 0.04)) + 0.05; }}};
+  std::vector<std::pair<std::string, Density>> densities = builtin_densities();
   for(int seed = 0; seed < 20; ++seed) densities.emplace_back("random " + std::to_string(seed), random_density(seed));
   for(const auto& d : densities)
     for(std::size_t n : {std::size_t(12), std::size_t(300), std::size_t(2000)}) {
