@@ -55,14 +55,20 @@ static void usage()
   std::exit(2);
 }
 
-// Moves every point not marked fixed to the centroid of its Voronoi cell. The
-// fixed points, a band along the border, keep the other cells bounded.
-static void lloyd_step(std::vector<K::Point_2>& p, const std::vector<bool>& fixed)
+// The Delaunay triangulation of p, each vertex knowing its index in p.
+static Delaunay delaunay_of(const std::vector<K::Point_2>& p)
 {
   std::vector<std::pair<K::Point_2, std::size_t>> indexed;
   indexed.reserve(p.size());
   for(std::size_t i = 0; i < p.size(); ++i) indexed.emplace_back(p[i], i);
-  Delaunay dt(indexed.begin(), indexed.end());
+  return Delaunay(indexed.begin(), indexed.end());
+}
+
+// Moves every point not marked fixed to the centroid of its Voronoi cell. The
+// fixed points, a band along the border, keep the other cells bounded.
+static void lloyd_step(std::vector<K::Point_2>& p, const std::vector<bool>& fixed)
+{
+  const Delaunay dt = delaunay_of(p);
   std::vector<K::Point_2> next = p;
   for(auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v) {
     if(fixed[v->info()]) continue;
@@ -92,10 +98,7 @@ static void lloyd_step(std::vector<K::Point_2>& p, const std::vector<bool>& fixe
 // leave, and a per-class average then carries the separation into the table.
 static std::vector<bool> separate(std::vector<K::Point_2>& p, const std::vector<bool>& fixed, double target)
 {
-  std::vector<std::pair<K::Point_2, std::size_t>> indexed;
-  indexed.reserve(p.size());
-  for(std::size_t i = 0; i < p.size(); ++i) indexed.emplace_back(p[i], i);
-  Delaunay dt(indexed.begin(), indexed.end());
+  const Delaunay dt = delaunay_of(p);
   std::vector<K::Vector_2> push(p.size(), K::Vector_2(0, 0));
   for(auto e = dt.finite_edges_begin(); e != dt.finite_edges_end(); ++e) {
     const auto a = e->first->vertex(Delaunay::cw(e->second)), b = e->first->vertex(Delaunay::ccw(e->second));

@@ -211,11 +211,7 @@ Input read_image(const Options& o)
   in.density.width = in.colours.width = img.width;
   in.density.height = in.colours.height = img.height;
   in.colours.channels = 3;
-  in.density.values.resize(img.width * img.height);
-  for(std::size_t k = 0; k < in.density.values.size(); ++k) {
-    const float* p = &img.values[3 * k];
-    in.density.values[k] = std::max(0., 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2]);
-  }
+  in.density.values = CGAL::IO::luminance(img);
   if(img.high_dynamic_range)
     for(float& v : img.values) v = std::pow(std::min(std::max(v, 0.f), 1.f), 1.f / 2.2f);
   in.colours.values = std::move(img.values);

@@ -17,6 +17,15 @@ namespace penrose_tools {
 
 // A raster of `channels` values a pixel stretched over the rectangle
 // [x0, x1] x [y0, y1], row 0 at the top; pixel (i, j) has its centre at
+// Index i clamped to [0, n).
+inline std::size_t clamp_index(long i, std::size_t n) { return std::size_t(std::min(std::max(i, 0L), long(n) - 1)); }
+
+// Pixel (i, j) of a w x h raster, the border repeated outside.
+inline double clamped_at(const std::vector<double>& v, std::size_t w, std::size_t h, long i, long j)
+{
+  return v[clamp_index(j, h) * w + clamp_index(i, w)];
+}
+
 // u = i + 1/2, v = j + 1/2 in pixel coordinates.
 template <class T>
 struct Raster
@@ -29,8 +38,7 @@ struct Raster
   double v(double y) const { return (y1 - y) / (y1 - y0) * double(height); }
   double x(double u) const { return x0 + u / double(width) * (x1 - x0); }
   double y(double v) const { return y1 - v / double(height) * (y1 - y0); }
-  std::size_t clamp(long i, std::size_t n) const { return std::size_t(std::min(std::max(i, 0L), long(n) - 1)); }
-  const T* at(long i, long j) const { return &values[channels * (clamp(j, height) * width + clamp(i, width))]; }
+  const T* at(long i, long j) const { return &values[channels * (clamp_index(j, height) * width + clamp_index(i, width))]; }
 
   // The bilinear interpolation of channel c at (x, y), clamped at the border.
   double operator()(double x, double y, std::size_t c = 0) const
@@ -47,13 +55,13 @@ struct Raster
 // values, value k of line l at v[l * line_step + k * step], with the border
 // value repeated. The running sum runs over whole lines at once when the lines
 // are the rows (step = width), so that columns are filtered in memory order.
-inline void box_pass(std::vector<double>& v, std::size_t length, std::size_t step, std::size_t lines,
+inline void box_pass(double* v, std::size_t length, std::size_t step, std::size_t lines,
                      std::size_t line_step, int radius)
 {
-  const std::vector<double> in = v;
+  const std::vector<double> in(v, v + (length - 1) * step + (lines - 1) * line_step + 1);
   std::vector<double> sum(lines, 0.);
   auto add = [&](long k, double sign) {
-    const std::size_t c = std::size_t(std::min(std::max(k, 0L), long(length) - 1)) * step;
+    const std::size_t c = clamp_index(k, length) * step;
     for(std::size_t l = 0; l < lines; ++l) sum[l] += sign * in[c + l * line_step];
   };
   for(long k = -radius; k <= radius; ++k) add(k, 1.);
@@ -71,12 +79,8 @@ inline void smooth(std::vector<double>& v, std::size_t w, std::size_t h, int rad
 {
   if(radius < 1) return;
   for(int pass = 0; pass < 2; ++pass) {
-    for(std::size_t j = 0; j < h; ++j) {  // one row at a time, to stay in cache
-      std::vector<double> row(v.begin() + long(j * w), v.begin() + long((j + 1) * w));
-      box_pass(row, w, 1, 1, 0, radius);
-      std::copy(row.begin(), row.end(), v.begin() + long(j * w));
-    }
-    box_pass(v, h, w, w, 1, radius);
+    for(std::size_t j = 0; j < h; ++j) box_pass(v.data() + j * w, w, 1, 1, 0, radius);  // in cache
+    box_pass(v.data(), h, w, w, 1, radius);
   }
 }
 
@@ -100,9 +104,7 @@ inline void log_transform(std::vector<double>& v)
 inline void gradient_magnitude(std::vector<double>& v, std::size_t w, std::size_t h)
 {
   std::vector<double> g(v.size());
-  auto at = [&](long i, long j) {
-    return v[std::size_t(std::min(std::max(j, 0L), long(h) - 1)) * w + std::size_t(std::min(std::max(i, 0L), long(w) - 1))];
-  };
+  auto at = [&](long i, long j) { return clamped_at(v, w, h, i, j); };
   for(long j = 0; j < long(h); ++j)
     for(long i = 0; i < long(w); ++i) {
       const double gx = at(i + 1, j - 1) + 2 * at(i + 1, j) + at(i + 1, j + 1) - at(i - 1, j - 1) - 2 * at(i - 1, j) - at(i - 1, j + 1);
@@ -161,9 +163,7 @@ inline std::vector<double> curvature_density(const std::vector<double>& heights,
                                              double dx, double dy, std::size_t block)
 {
   std::vector<double> k(heights.size(), 0.);
-  auto at = [&](long i, long j) {
-    return heights[std::size_t(std::min(std::max(j, 0L), long(h) - 1)) * w + std::size_t(std::min(std::max(i, 0L), long(w) - 1))];
-  };
+  auto at = [&](long i, long j) { return clamped_at(heights, w, h, i, j); };
   for(long j = 0; j < long(h); ++j)
     for(long i = 0; i < long(w); ++i) {
       const double c = at(i, j);

@@ -36,11 +36,7 @@ inline Luminance_image read_luminance_image(const std::string& file,
   img.width = rgb.width;
   img.height = rgb.height;
   img.high_dynamic_range = rgb.high_dynamic_range;
-  img.values.resize(rgb.width * rgb.height);
-  for(std::size_t k = 0; k < img.values.size(); ++k) {
-    const float* c = &rgb.values[3 * k];
-    img.values[k] = (std::max)(0., 0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2]);
-  }
+  img.values = luminance(rgb);
   return img;
 }
 

@@ -11,6 +11,7 @@
 
 #include <stb/stb_image.h>
 
+#include <algorithm>
 #include <cstddef>
 #include <limits>
 #include <memory>
@@ -76,6 +77,18 @@ inline Rgb_image read_rgb_image(const std::string& file, std::size_t max_pixels 
   else
     convert(stbi_load_from_memory(data, size, &w, &h, &c, 3), 1.f / 255.f);
   return img;
+}
+
+/// The luminance of each pixel of `rgb` (Rec. 709 weights), at least 0, row
+/// after row.
+inline std::vector<double> luminance(const Rgb_image& rgb)
+{
+  std::vector<double> l(rgb.width * rgb.height);
+  for(std::size_t k = 0; k < l.size(); ++k) {
+    const float* c = &rgb.values[3 * k];
+    l[k] = (std::max)(0., 0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2]);
+  }
+  return l;
 }
 
 } // namespace IO
