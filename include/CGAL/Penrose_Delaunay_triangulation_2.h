@@ -175,7 +175,7 @@ public:
     stats_ = Construction_statistics();
     Flat_mesh mesh;
     // where each sample of the region goes; NaN for the vertices to remove
-    std::vector<std::pair<double, double>> target;
+    internal::Penrose::Large_vector<std::pair<double, double>> target;
     std::vector<std::pair<Index, internal::Penrose::Placed_sample>> placed;  // for on_vertex only
     {
       internal::Penrose::Base_triangulation_builder builder(context, mesh, visits);
@@ -209,9 +209,9 @@ public:
     // keep of the targets only what is still needed, before the TDS grows
     std::vector<std::pair<double, double>> unplaced_target;
     for(Index v : unplaced) unplaced_target.push_back(target[v]);
-    std::vector<std::pair<double, double>>().swap(target);
+    decltype(target)().swap(target);
 
-    std::vector<Vertex_handle> handle = write_tds(mesh, lift);
+    auto handle = write_tds(mesh, lift);
     mesh = Flat_mesh();
     if(!proceed(0.99)) return abandon();
     for(Index v : stuck) this->remove(handle[v]);
@@ -304,20 +304,20 @@ private:
   // Writes the flat mesh into the TDS; its coordinates are released once the
   // TDS vertices hold them, so that the two never peak together.
   template <class Lift>
-  std::vector<Vertex_handle> write_tds(Flat_mesh& m, const Lift& lift)
+  internal::Penrose::Large_vector<Vertex_handle> write_tds(Flat_mesh& m, const Lift& lift)
   {
     Triangulation_data_structure& tds = this->tds();
     tds.clear();
     const Vertex_handle infinite = tds.create_vertex();
     this->set_infinite_vertex(infinite);
     tds.set_dimension(2);
-    std::vector<Vertex_handle> vh(m.vertex_face.size());
+    internal::Penrose::Large_vector<Vertex_handle> vh(m.vertex_face.size());
     for(std::size_t v = 0; v < vh.size(); ++v)
       if(m.vertex_face[v] != Flat_mesh::null) {
         vh[v] = tds.create_vertex();
         vh[v]->set_point(lift(m.points[v].x(), m.points[v].y()));
       }
-    std::vector<Flat_mesh::Point>().swap(m.points);
+    decltype(m.points)().swap(m.points);
     // The TDS face of each flat face. The flat face's vertex slots are dead
     // once that exists: they hold its handle where it fits, so that no array
     // of handles is added at the peak of the construction.

@@ -22,6 +22,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <functional>
 #include <map>
 #include <string>
@@ -128,6 +129,32 @@ TEST(Triangulation, BuiltInDensitiesMatchCgal)
     for(std::size_t n : {std::size_t(10), std::size_t(300), std::size_t(5000), std::size_t(100000)})
       expect_same_as_cgal(Sampler(unit_square, d.second, CGAL::parameters::number_of_output_points(n)),
                           d.first + " " + std::to_string(n));
+}
+
+TEST(Triangulation, LargeEnoughForHugePagesMatchesCgal)
+{
+  // at this size the flat mesh's arrays pass Huge_page_allocator's threshold
+  expect_same_as_cgal(Sampler(unit_square, [](const Point& p) { return 0.2 + p.x() * p.y(); },
+                              CGAL::parameters::number_of_output_points(400000)), "400000 points");
+}
+
+TEST(Internals, HugePageAllocatorKeepsContentsAcrossItsThreshold)
+{
+  // grown one element at a time, the vector moves from std::allocator to
+  // mapped huge pages; shrunk, back again
+  CGAL::internal::Penrose::Large_vector<std::uint64_t> v;
+  const std::uint64_t n = 3000000;  // 24 MB
+  for(std::uint64_t i = 0; i < n; ++i) v.push_back(i * 0x9e3779b97f4a7c15u);
+#if defined(CGAL_PENROSE_HUGE_PAGES)
+  EXPECT_EQ(reinterpret_cast<std::uintptr_t>(v.data()) % (std::uintptr_t(1) << 21), 0u);
+#endif
+  std::size_t wrong = 0;
+  for(std::uint64_t i = 0; i < n; ++i) wrong += v[i] != i * 0x9e3779b97f4a7c15u;
+  EXPECT_EQ(wrong, 0u);
+  v.resize(1000);
+  v.shrink_to_fit();
+  for(std::uint64_t i = 0; i < 1000; ++i) wrong += v[i] != i * 0x9e3779b97f4a7c15u;
+  EXPECT_EQ(wrong, 0u);
 }
 
 TEST(Triangulation, RandomSmoothDensitiesMatchCgal)

@@ -49,7 +49,7 @@ public:
 
   // Where each vertex of the mesh goes: its corrected position if it is an
   // active sample that lands in the region, NaN otherwise (to be removed).
-  std::vector<std::pair<double, double>> take_targets() { return std::move(target_); }
+  Large_vector<std::pair<double, double>> take_targets() { return std::move(target_); }
 
   // The sample at kept vertex v, with the data of its leaf tile; needs
   // `record_births`.
@@ -347,11 +347,11 @@ private:
   const Sampling_context& c_;
   Flat_mesh& m_;
   const bool record_births_;
-  std::vector<Sample_birth> birth_;  // with record_births_ only
+  Large_vector<Sample_birth> birth_;  // with record_births_ only
   std::vector<Tile> frontier_, next_;
   std::vector<Work> work_;           // for the tiles of frontier_
-  std::vector<double> importance_;   // per vertex, at the nearest point of the region
-  std::vector<std::pair<double, double>> target_;  // see take_targets()
+  Large_vector<double> importance_;   // per vertex, at the nearest point of the region
+  Large_vector<std::pair<double, double>> target_;  // see take_targets()
   Placed_sample scratch_;
   std::vector<Index> face_tile_;     // frontier tile of an intact face, or null
 };

@@ -68,8 +68,8 @@ public:
   std::vector<Index> move_vertices(const Targets& target, std::size_t& repaired)
   {
     const std::size_t n = m_.points.size();
-    std::vector<Flat_mesh::Point> reference(n);
-    std::vector<char> state(n, 0);  // 1: moved, 2: sent back
+    Large_vector<Flat_mesh::Point> reference(n);
+    Large_vector<char> state(n, 0);  // 1: moved, 2: sent back
     for(Index v = 0; v < target.size(); ++v)
       if(!std::isnan(target[v].first) && m_.vertex_face[v] != null &&
          (target[v].first != m_.points[v].x() || target[v].second != m_.points[v].y())) {
