@@ -115,6 +115,7 @@ public:
       }
       for(std::size_t k = 0; k < frontier_.size(); ++k) {
         if(k % progress_period == 0 && !report(tiles_done + 0.5 * (frontier_.size() + k))) return false;
+        if(k + 2 * ahead < frontier_.size()) CGAL_PENROSE_PREFETCH(&m_.faces[frontier_[k + 2 * ahead].face]);
         if(k + ahead < frontier_.size())
           for(Index g : m_.faces[frontier_[k + ahead].face].n)
             if(g != null) CGAL_PENROSE_PREFETCH(&m_.faces[g]);
