@@ -93,34 +93,20 @@ public:
       // released rather than held through the level
       std::vector<Tile>().swap(next_);
       next_.reserve(3 * frontier_.size());
-      // each phase fetches what it will read of the tile some steps ahead
-      // (inline: see CGAL_PENROSE_PREFETCH)
-      for(std::size_t k = 0; k < frontier_.size(); ++k) {
-        if(k % progress_period == 0 && !report(tiles_done + 0.5 * k)) return false;
-        if(k + 2 * ahead < frontier_.size()) {
-          const Tile& t = frontier_[k + 2 * ahead];
-          for(Index c : t.corners) {
-            CGAL_PENROSE_PREFETCH(&m_.points[c]);
-            CGAL_PENROSE_PREFETCH(&importance_[c]);
-          }
-          CGAL_PENROSE_PREFETCH(&m_.faces[t.face]);
-        }
-        if(k + ahead < frontier_.size())
-          for(Index g : m_.faces[frontier_[k + ahead].face].n)
-            if(g != null) {
-              CGAL_PENROSE_PREFETCH(&m_.faces[g]);
-              if(g < face_tile_.size()) CGAL_PENROSE_PREFETCH(&face_tile_[g]);
-            }
-        create_vertices(k, level);
-      }
-      for(std::size_t k = 0; k < frontier_.size(); ++k) {
-        if(k % progress_period == 0 && !report(tiles_done + 0.5 * (frontier_.size() + k))) return false;
-        if(k + 2 * ahead < frontier_.size()) CGAL_PENROSE_PREFETCH(&m_.faces[frontier_[k + 2 * ahead].face]);
-        if(k + ahead < frontier_.size())
-          for(Index g : m_.faces[frontier_[k + ahead].face].n)
-            if(g != null) CGAL_PENROSE_PREFETCH(&m_.faces[g]);
-        create_triangles(k);
-      }
+      const double done = double(tiles_done), half = 0.5 * double(frontier_.size());
+      const bool completed =
+        for_each_tile([&](std::size_t k) { return report(done + 0.5 * k); },
+                      [this](const Tile& t) {
+                        for(Index c : t.corners) {
+                          CGAL_PENROSE_PREFETCH(&m_.points[c]);
+                          CGAL_PENROSE_PREFETCH(&importance_[c]);
+                        }
+                      },
+                      [this, level](std::size_t k) { create_vertices(k, level); }) &&
+        for_each_tile([&](std::size_t k) { return report(done + half + 0.5 * k); },
+                      [](const Tile&) {},
+                      [this](std::size_t k) { create_triangles(k); });
+      if(!completed) return false;
       for(const Tile& t : frontier_) if(t.face < face_tile_.size()) face_tile_[t.face] = null;
       tiles_done += frontier_.size();
       frontier_.swap(next_);
@@ -154,6 +140,31 @@ private:
   };
 
   static int slot(int edge) { return edge == 0 ? 0 : 1; }
+
+  // Runs `step(k)` on every tile k of the frontier, while `proceed(k)`,
+  // asked now and then, agrees. The walk is bound by memory: it fetches what
+  // a tile reads some steps ahead, its face and `fetch(tile)` first, then,
+  // once that face is in, the faces across its edges and their tiles.
+  template <class Proceed, class Fetch, class Step>
+  bool for_each_tile(const Proceed& proceed, const Fetch& fetch, const Step& step)
+  {
+    const std::size_t n = frontier_.size();
+    for(std::size_t k = 0; k < n; ++k) {
+      if(k % progress_period == 0 && !proceed(k)) return false;
+      if(k + 2 * ahead < n) {
+        fetch(frontier_[k + 2 * ahead]);
+        CGAL_PENROSE_PREFETCH(&m_.faces[frontier_[k + 2 * ahead].face]);
+      }
+      if(k + ahead < n)
+        for(Index g : m_.faces[frontier_[k + ahead].face].n)
+          if(g != null) {
+            CGAL_PENROSE_PREFETCH(&m_.faces[g]);
+            if(g < face_tile_.size()) CGAL_PENROSE_PREFETCH(&face_tile_[g]);
+          }
+      step(k);
+    }
+    return true;
+  }
 
   static constexpr std::size_t ahead = 8;
   static constexpr std::size_t progress_period = std::size_t(1) << 16;
