@@ -67,21 +67,22 @@ private:
   static std::size_t rounded(std::size_t bytes) { return (bytes + huge_page - 1) & ~(huge_page - 1); }
 
 #if defined(CGAL_PENROSE_HUGE_PAGES)
-  // Maps whole huge pages at a huge-page boundary: one more page is mapped
-  // than asked for, and the parts outside the aligned range are unmapped.
+  // Maps whole huge pages at a huge-page boundary: one more page than asked
+  // for is mapped, and what lies before and after the aligned range is
+  // unmapped again.
   static void* map(std::size_t bytes)
   {
     if(bytes > std::size_t(-1) - 2 * huge_page) throw std::bad_alloc();
     const std::size_t size = rounded(bytes);
     void* raw = mmap(nullptr, size + huge_page, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
     if(raw == MAP_FAILED) throw std::bad_alloc();
-    const std::uintptr_t begin = std::uintptr_t(raw);
-    const std::uintptr_t aligned = (begin + huge_page - 1) & ~std::uintptr_t(huge_page - 1);
-    if(aligned > begin) munmap(raw, aligned - begin);
-    if(aligned + size < begin + size + huge_page)
-      munmap(reinterpret_cast<void*>(aligned + size), begin + size + huge_page - (aligned + size));
-    madvise(reinterpret_cast<void*>(aligned), size, MADV_HUGEPAGE);  // advice: its failure is harmless
-    return reinterpret_cast<void*>(aligned);
+    char* const begin = static_cast<char*>(raw);
+    const std::size_t head = (huge_page - std::uintptr_t(begin) % huge_page) % huge_page;
+    char* const aligned = begin + head;
+    if(head > 0) munmap(begin, head);
+    munmap(aligned + size, huge_page - head);
+    madvise(aligned, size, MADV_HUGEPAGE);  // advice: its failure is harmless
+    return aligned;
   }
 #endif
 };
