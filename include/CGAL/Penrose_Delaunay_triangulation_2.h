@@ -244,10 +244,11 @@ private:
   };
 
   // Three far vertices and the triangles between them and the root tile, so
-  // that every vertex of the tile tree is interior.
+  // that every vertex of the tile tree is interior. The root tile's boundary
+  // is walked counter-clockwise from its corner 0: its edge e runs from
+  // corner e to corner e + 1, and the vertices 0, 1, 2 are those corners.
   static std::array<Index, 3> add_frame(Flat_mesh& m, const internal::Penrose::Sampling_context& c)
   {
-    // the root's boundary edges, a -> b counter-clockwise, grouped by root edge
     double cx = 0., cy = 0.;
     for(int i = 0; i < 3; ++i) { cx += c.root_x(i) / 3.; cy += c.root_y(i) / 3.; }
     std::array<Index, 3> w;
@@ -256,49 +257,49 @@ private:
       const double my = 0.5 * (c.root_y(e) + c.root_y((e + 1) % 3)) - cy;
       w[e] = m.add_vertex(cx + 8. * mx, cy + 8. * my);
     }
-    // the root edge a boundary edge lies on: the root line nearest to its
-    // midpoint (the other two are a tile size away; no tolerance to tune)
-    auto root_edge_of = [&](Index a, Index b) {
-      const double px = 0.5 * (m.points[a].x() + m.points[b].x()), py = 0.5 * (m.points[a].y() + m.points[b].y());
-      int best = 0;
-      double best_distance = std::numeric_limits<double>::infinity();
-      for(int e = 0; e < 3; ++e) {
-        const double ex = c.root_x((e + 1) % 3) - c.root_x(e), ey = c.root_y((e + 1) % 3) - c.root_y(e);
-        const double d = std::abs(ex * (py - c.root_y(e)) - ey * (px - c.root_x(e))) / std::hypot(ex, ey);
-        if(d < best_distance) { best_distance = d; best = e; }
-      }
-      return best;
-    };
-    std::vector<std::array<Index, 2>> boundary;  // (face, edge index)
-    const std::size_t nf = m.faces.size();
-    for(Index f = 0; f < nf; ++f)
-      if(m.face_alive[f])
-        for(int i = 0; i < 3; ++i)
-          if(m.faces[f].n[i] == Flat_mesh::null) boundary.push_back({f, Index(i)});
-    // fan faces (b, a, w[e]) outside each boundary edge a -> b
-    std::vector<Index> outer;
-    for(const auto& fe : boundary) {
-      const Index f = fe[0]; const int i = int(fe[1]);
-      const Index a = m.faces[f].v[Flat_mesh::ccw(i)], b = m.faces[f].v[Flat_mesh::cw(i)];
-      const int e = root_edge_of(a, b);
+    // Each boundary edge a -> b of root edge e gets the face (b, a, w[e])
+    // outside it; consecutive ones share their edge from b to w[e], and at
+    // corner e the face (w[e - 1], w[e], e) closes the gap.
+    Index first = Flat_mesh::null, previous = Flat_mesh::null;
+    Index a = 0;
+    int e = 0;
+    do {
+      const auto [f, i] = boundary_edge_from(m, a);
+      const Index b = m.faces[f].v[Flat_mesh::cw(i)];
       const Index g = m.create_face(b, a, w[e]);
       m.link(g, 2, f, i);
-      outer.push_back(g);
-    }
-    // corner faces (w[e-1], w[e], corner e)
-    for(int e = 0; e < 3; ++e) {
-      outer.push_back(m.create_face(w[(e + 2) % 3], w[e], Index(e)));
-    }
-    // glue the outer faces to each other along their shared edges
-    for(std::size_t p = 0; p < outer.size(); ++p)
-      for(std::size_t q = p + 1; q < outer.size(); ++q)
-        for(int i = 0; i < 3; ++i) {
-          const Index f = outer[p], g = outer[q];
-          if(m.faces[f].n[i] != Flat_mesh::null) continue;
-          const int j = m.edge_index(g, m.faces[f].v[Flat_mesh::cw(i)], m.faces[f].v[Flat_mesh::ccw(i)]);
-          if(j >= 0) m.link(f, i, g, j);
-        }
+      if(previous == Flat_mesh::null) first = g;
+      else if(a < 3) close_corner(m, w, e, previous, g);
+      else m.link(previous, 1, g, 0);
+      previous = g;
+      a = b;
+      if(a < 3) e = int(a);
+    } while(a != 0);
+    close_corner(m, w, 0, previous, first);
     return w;
+  }
+
+  // The boundary edge of the flat mesh that leaves its vertex b, as (face,
+  // edge index): the faces around b are turned clockwise until there is
+  // nothing across.
+  static std::pair<Index, int> boundary_edge_from(const Flat_mesh& m, Index b)
+  {
+    Index f = m.vertex_face[b];
+    for(;;) {
+      const int i = Flat_mesh::cw(m.index_of_vertex(f, b));
+      const Index g = m.faces[f].n[i];
+      if(g == Flat_mesh::null) return {f, i};
+      f = g;
+    }
+  }
+
+  // The corner face (w[e - 1], w[e], e) between the frame faces `before` and
+  // `after` of root corner e.
+  static void close_corner(Flat_mesh& m, const std::array<Index, 3>& w, int e, Index before, Index after)
+  {
+    const Index h = m.create_face(w[(e + 2) % 3], w[e], Index(e));
+    m.link(before, 1, h, 1);
+    m.link(h, 0, after, 0);
   }
 
   // Writes the flat mesh into the TDS; its coordinates are released once the
