@@ -73,7 +73,7 @@ public:
     if(record_births_) birth_.reserve(n);
     m_.faces.reserve(2 * n); m_.face_alive.reserve(2 * n);
     for(int i = 0; i < 3; ++i) add_vertex(c_.root_x(i), c_.root_y(i), c_.importance(c_.root_x(i), c_.root_y(i)));
-    const Tile root = {0, 0, {{0, 1, 2}}, m_.create_face(0, 1, 2), FAT_F, 15, 0};
+    const Tile root = {0, 0, FAT_F, 15, 0, {{0, 1, 2}}, m_.create_face(0, 1, 2)};
     double rx[3], ry[3];
     for(int i = 0; i < 3; ++i) { rx[i] = m_.points[i].x(); ry[i] = m_.points[i].y(); }
     if(c_.should_refine(0, 0, rx, ry, importance_.data())) frontier_.push_back(root);
@@ -115,16 +115,23 @@ public:
   }
 
 private:
-  // A tile that is to be subdivided.
+  // A tile that is to be subdivided. Packed in 32 bytes: the frontier of
+  // every level is written to fresh memory, which costs by the byte.
   struct Tile
   {
-    std::uint64_t code, threshold;
+    std::uint64_t code;
+    std::uint64_t threshold : 52;
+    std::uint64_t type : 2;              // a Tile_type
+    std::uint64_t direction : 5;
+    std::uint64_t refined_children : 3;  // bit c: child c is in the next frontier
     std::array<Index, 3> corners;
     Index face;
-    Tile_type type;
-    std::uint8_t direction;
-    std::uint8_t refined_children;  // bit c: child c is in the next frontier
+
+    Tile_type tile_type() const { return static_cast<Tile_type>(type); }
+    std::uint8_t tile_direction() const { return static_cast<std::uint8_t>(direction); }
   };
+  // thresholds stay below the Fibonacci number of the level after the last
+  static_assert(max_level <= 30, "Tile::threshold holds 52 bits");
 
   // What the subdivision of a tile of the current level needs besides, per
   // split edge: the new vertex, and the triangles that the neighbour across
@@ -196,7 +203,7 @@ private:
   {
     const Tile& t = frontier_[k];
     Work& w = work_[k];
-    const Subdivision_rule& r = rule(t.type);
+    const Subdivision_rule& r = rule(t.tile_type());
     const int child_level = level + 1;
     std::array<Index, 5> v = {{t.corners[0], t.corners[1], t.corners[2], null, null}};
     double vx[5], vy[5], vi[5];
@@ -212,7 +219,7 @@ private:
         const Sample_birth birth = { t.code * 4 + r.sample_code_pair,
                                      t.threshold + pair_weight(r.sample_code_pair, child_level),
                                      static_cast<std::uint8_t>(child_level),
-                                     add_direction(t.direction, r.sample_direction_step) };
+                                     add_direction(t.tile_direction(), r.sample_direction_step) };
         if(kept(vx[3 + n], vy[3 + n], vi[3 + n], birth)) {
           if(x == null) add_new_vertex(k, nv.edge, vx[3 + n], vy[3 + n], vi[3 + n]);
           target_[x] = {scratch_.x, scratch_.y};
@@ -242,9 +249,9 @@ private:
       child.threshold = threshold;
       child.face = null;
       child.type = cr.type;
-      child.direction = add_direction(t.direction, cr.direction_step);
+      child.direction = add_direction(t.tile_direction(), cr.direction_step);
       child.refined_children = 0;
-      frontier_[k].refined_children |= std::uint8_t(1u << c);
+      frontier_[k].refined_children |= 1u << c;
       next_.push_back(child);
     }
   }
@@ -291,11 +298,11 @@ private:
   {
     const Tile& t = frontier_[k];
     const Work& w = work_[k];
-    const Subdivision_rule& r = rule(t.type);
+    const Subdivision_rule& r = rule(t.tile_type());
     unsigned mask = 0;
     for(int n = 0; n < r.number_of_new_vertices; ++n)
       if(w.new_vertices[slot(r.new_vertices[n].edge)] != null) mask |= 1u << n;
-    const Split_pattern& p = split_patterns(t.type, mask);
+    const Split_pattern& p = split_patterns(t.tile_type(), mask);
     const Flat_mesh::Face parent = m_.faces[t.face];
     std::array<Index, 5> v = {{t.corners[0], t.corners[1], t.corners[2], null, null}};
     for(int n = 0; n < r.number_of_new_vertices; ++n) v[3 + n] = w.new_vertices[slot(r.new_vertices[n].edge)];
