@@ -133,16 +133,14 @@ private:
   // thresholds stay below the Fibonacci number of the level after the last
   static_assert(max_level <= 30, "Tile::threshold holds 52 bits");
 
-  // What the subdivision of a tile of the current level needs besides, per
-  // split edge: the new vertex, and the triangles that the neighbour across
-  // left along that edge, if it came first. Every tile type splits at most
-  // its edge 0 and one other edge, so an edge's slot is known without its
-  // type (see slot()). Held for one level only, apart from the tiles, to keep
-  // them small.
+  // What the subdivision of a tile of the current level needs besides: the
+  // new vertex of each split edge. Every tile type splits at most its edge 0
+  // and one other edge, so an edge's slot is known without its type (see
+  // slot()). Held for one level only, apart from the tiles, to keep them
+  // small.
   struct Work
   {
     std::array<Index, 2> new_vertices = {{null, null}};
-    std::array<std::array<Index, 2>, 2> pending_triangles = {{{{null, null}}, {{null, null}}}};
     Index first_child = null;  // in the next frontier; the others follow
   };
 
@@ -307,6 +305,10 @@ private:
     std::array<Index, 5> v = {{t.corners[0], t.corners[1], t.corners[2], null, null}};
     for(int n = 0; n < r.number_of_new_vertices; ++n) v[3 + n] = w.new_vertices[slot(r.new_vertices[n].edge)];
 
+    // a face at each split vertex before this tile's triangles take it over:
+    // where the tile across came first, one of the triangles it left
+    std::array<Index, 2> left;
+    for(int n = 0; n < 2; ++n) left[n] = w.new_vertices[n] == null ? null : m_.vertex_face[w.new_vertices[n]];
     std::array<Index, 3> tri;
     for(int f = 0; f < p.number_of_triangles; ++f) {
       const auto& c = p.triangles[f].corners;
@@ -316,7 +318,7 @@ private:
     for(int f = 0; f < p.number_of_triangles; ++f)
       for(int j = 0; j < 3; ++j)
         if(p.places[f][j].parent_edge < 0) m_.faces[tri[f]].n[j] = tri[p.places[f][j].triangle];
-    for(int e = 0; e < 3; ++e) connect_parent_edge(t, w, k, parent, e, p, tri);
+    for(int e = 0; e < 3; ++e) connect_parent_edge(w, left, k, parent, e, p, tri);
     // the children to subdivide next take their triangles
     for(int f = 0; f < p.number_of_triangles; ++f) {
       const int c = p.triangles[f].child;
@@ -325,7 +327,7 @@ private:
     }
   }
 
-  void connect_parent_edge(const Tile& t, const Work& w, std::size_t k, const Flat_mesh::Face& parent, int e,
+  void connect_parent_edge(const Work& w, const std::array<Index, 2>& left, std::size_t k, const Flat_mesh::Face& parent, int e,
                            const Split_pattern& p, const std::array<Index, 3>& tri)
   {
     const Index a = parent.v[e], b = parent.v[(e + 1) % 3];
@@ -342,15 +344,14 @@ private:
     }
     const int n = slot(e);
     const Index x = w.new_vertices[n];
-    if(w.pending_triangles[n][0] != null) {  // the tile across is done: take its triangles
-      const Index f0 = w.pending_triangles[n][0], f1 = w.pending_triangles[n][1];
-      m_.link(seg[0], seg_edge[0], f0, m_.edge_index(f0, x, a));
-      m_.link(seg[1], seg_edge[1], f1, m_.edge_index(f1, b, x));
+    if(g == null) return;  // the root's boundary
+    if(across != null && across < k) {  // the tile across is done: take its triangles
+      const std::array<Index, 2> f = triangles_left_at(left[n], x, a, b);
+      m_.link(seg[0], seg_edge[0], f[0], m_.edge_index(f[0], x, a));
+      m_.link(seg[1], seg_edge[1], f[1], m_.edge_index(f[1], b, x));
       return;
     }
-    if(g == null) return;  // the root's boundary
-    if(across != null && across > k) {  // still to come: leave it our triangles
-      work_[across].pending_triangles[slot_across(g, t, e)] = {{seg[1], seg[0]}};
+    if(across != null) {  // still to come: leave it our triangles
       m_.faces[seg[0]].n[seg_edge[0]] = g;
       m_.faces[seg[1]].n[seg_edge[1]] = g;
       return;
@@ -361,6 +362,26 @@ private:
     const Index h = m_.split_face_on_edge(g, ge, x);  // g keeps b-x, h takes x-a
     m_.link(seg[0], seg_edge[0], h, 0);
     m_.link(seg[1], seg_edge[1], g, 0);
+  }
+
+  // The triangles that the tile across, subdivided earlier in this level,
+  // left along the edge a -> b that it split at x: the one with the edge
+  // x -> a and the one with the edge b -> x, found by turning around x from
+  // h, any of its triangles at x.
+  std::array<Index, 2> triangles_left_at(Index h, Index x, Index a, Index b) const
+  {
+    std::array<Index, 2> f;
+    for(int j = m_.index_of_vertex(h, x); m_.faces[h].v[Flat_mesh::ccw(j)] != a; j = m_.index_of_vertex(h, x)) {
+      h = m_.faces[h].n[Flat_mesh::cw(j)];  // clockwise
+      CGAL_assertion(h != null);
+    }
+    f[0] = h;
+    for(int j = m_.index_of_vertex(h, x); m_.faces[h].v[Flat_mesh::cw(j)] != b; j = m_.index_of_vertex(h, x)) {
+      h = m_.faces[h].n[Flat_mesh::ccw(j)];  // counter-clockwise
+      CGAL_assertion(h != null);
+    }
+    f[1] = h;
+    return f;
   }
 
   const Sampling_context& c_;
