@@ -64,17 +64,24 @@ public:
   // would fold, its moved vertices go back, until no face folds; those are
   // then moved one at a time with move_vertex(). Returns the vertices that
   // could not be placed (removed from the mesh) and counts the repairs.
+  // The vertices moved at once trade places with their targets, so that no
+  // copy of the positions is needed for the way back: on return `target`
+  // holds their former positions, and still the targets of the vertices
+  // that went back (moved one at a time, or returned).
   template <class Targets>
-  std::vector<Index> move_vertices(const Targets& target, std::size_t& repaired)
+  std::vector<Index> move_vertices(Targets& target, std::size_t& repaired)
   {
     const std::size_t n = m_.points.size();
-    Large_vector<Flat_mesh::Point> reference(n);
     Large_vector<char> state(n, 0);  // 1: moved, 2: sent back
+    auto trade = [&](Index v) {
+      const Flat_mesh::Point p = m_.points[v];
+      m_.points[v] = Flat_mesh::Point(target[v].first, target[v].second);
+      target[v] = {p.x(), p.y()};
+    };
     for(Index v = 0; v < target.size(); ++v)
       if(!std::isnan(target[v].first) && m_.vertex_face[v] != null &&
          (target[v].first != m_.points[v].x() || target[v].second != m_.points[v].y())) {
-        reference[v] = m_.points[v];
-        m_.points[v] = Flat_mesh::Point(target[v].first, target[v].second);
+        trade(v);
         state[v] = 1;
       }
     std::vector<Index> folded, next;
@@ -88,7 +95,7 @@ public:
           const Index u = m_.faces[f].v[i];
           if(state[u] != 1) continue;
           state[u] = 2;
-          m_.points[u] = reference[u];
+          trade(u);
           faces_around(u, next);
         }
       }
