@@ -94,6 +94,7 @@ public:
       std::vector<Tile>().swap(next_);
       next_.reserve(3 * frontier_.size());
       const double done = double(tiles_done), half = 0.5 * double(frontier_.size());
+      Index next_child = 0;
       const bool completed =
         for_each_tile([&](std::size_t k) { return report(done + 0.5 * k); },
                       [this](const Tile& t) {
@@ -105,7 +106,7 @@ public:
                       [this, level](std::size_t k) { create_vertices(k, level); }) &&
         for_each_tile([&](std::size_t k) { return report(done + half + 0.5 * k); },
                       [](const Tile&) {},
-                      [this](std::size_t k) { create_triangles(k); });
+                      [this, &next_child](std::size_t k) { create_triangles(k, next_child); });
       if(!completed) return false;
       for(const Tile& t : frontier_) if(t.face < face_tile_.size()) face_tile_[t.face] = null;
       tiles_done += frontier_.size();
@@ -141,7 +142,6 @@ private:
   struct Work
   {
     std::array<Index, 2> new_vertices = {{null, null}};
-    Index first_child = null;  // in the next frontier; the others follow
   };
 
   static int slot(int edge) { return edge == 0 ? 0 : 1; }
@@ -226,7 +226,6 @@ private:
       }
       v[3 + n] = x;
     }
-    w.first_child = Index(next_.size());
     for(int c = 0; c < r.number_of_children; ++c) {
       const Child_rule& cr = r.children[c];
       double cx[3], cy[3], ci[3];
@@ -292,7 +291,10 @@ private:
   }
 
   // Phase 2: the triangles of the tile, and their links across its edges.
-  void create_triangles(std::size_t k)
+  // `next_child`: where the tile's first child in the next frontier is, if
+  // any; advanced past its children (the tiles are walked in the order of
+  // phase 1, which placed them).
+  void create_triangles(std::size_t k, Index& next_child)
   {
     const Tile& t = frontier_[k];
     const Work& w = work_[k];
@@ -323,8 +325,9 @@ private:
     for(int f = 0; f < p.number_of_triangles; ++f) {
       const int c = p.triangles[f].child;
       if(c >= 0 && (t.refined_children >> c & 1u))
-        next_[w.first_child + refined_before(t, c)].face = tri[f];
+        next_[next_child + refined_before(t, c)].face = tri[f];
     }
+    next_child += refined_before(t, 3);
   }
 
   void connect_parent_edge(const Work& w, const std::array<Index, 2>& left, std::size_t k, const Flat_mesh::Face& parent, int e,
