@@ -285,12 +285,8 @@ private:
   static std::pair<Index, int> boundary_edge_from(const Flat_mesh& m, Index b)
   {
     Index f = m.vertex_face[b];
-    for(;;) {
-      const int i = Flat_mesh::cw(m.index_of_vertex(f, b));
-      const Index g = m.faces[f].n[i];
-      if(g == Flat_mesh::null) return {f, i};
-      f = g;
-    }
+    for(Index g = m.cw_face_around(f, b); g != Flat_mesh::null; g = m.cw_face_around(f, b)) f = g;
+    return {f, Flat_mesh::cw(m.index_of_vertex(f, b))};
   }
 
   // The corner face (w[e - 1], w[e], e) between the frame faces `before` and

@@ -374,13 +374,13 @@ private:
   std::array<Index, 2> triangles_left_at(Index h, Index x, Index a, Index b) const
   {
     std::array<Index, 2> f;
-    for(int j = m_.index_of_vertex(h, x); m_.faces[h].v[Flat_mesh::ccw(j)] != a; j = m_.index_of_vertex(h, x)) {
-      h = m_.faces[h].n[Flat_mesh::cw(j)];  // clockwise
+    while(m_.faces[h].v[Flat_mesh::ccw(m_.index_of_vertex(h, x))] != a) {
+      h = m_.cw_face_around(h, x);
       CGAL_assertion(h != null);
     }
     f[0] = h;
-    for(int j = m_.index_of_vertex(h, x); m_.faces[h].v[Flat_mesh::cw(j)] != b; j = m_.index_of_vertex(h, x)) {
-      h = m_.faces[h].n[Flat_mesh::ccw(j)];  // counter-clockwise
+    while(m_.faces[h].v[Flat_mesh::cw(m_.index_of_vertex(h, x))] != b) {
+      h = m_.ccw_face_around(h, x);
       CGAL_assertion(h != null);
     }
     f[1] = h;

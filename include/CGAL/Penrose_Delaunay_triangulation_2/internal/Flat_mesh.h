@@ -111,6 +111,12 @@ public:
     return F.v[0] == v ? 0 : (F.v[1] == v ? 1 : 2);
   }
 
+  // The next face around vertex v from its face f: counter-clockwise
+  // across the edge of f that ends at v, clockwise across the one that
+  // leaves it; null past the boundary.
+  Index ccw_face_around(Index f, Index v) const { return faces[f].n[ccw(index_of_vertex(f, v))]; }
+  Index cw_face_around(Index f, Index v) const { return faces[f].n[cw(index_of_vertex(f, v))]; }
+
   int index_of_neighbor(Index f, Index g) const
   {
     const Face& F = faces[f];

@@ -137,7 +137,7 @@ private:
     Index f = f0;
     do {
       out.push_back(f);
-      f = m_.faces[f].n[Flat_mesh::ccw(m_.index_of_vertex(f, v))];
+      f = m_.ccw_face_around(f, v);
     } while(f != f0 && f != null);
   }
 
