@@ -121,6 +121,7 @@ static std::vector<float> relax_and_average(const Options& o, const P::Correctio
                                             int iterations, double push_weight)
 {
   const unsigned columns = P::number_of_structural_indices(o.structural_bits);
+  const P::Importance_bins importance_bins(o.bins);
   std::vector<double> sum(2 * o.bins * columns, 0.);
   std::vector<double> count(o.bins * columns, 0.);
   const double phi2 = P::golden_ratio * P::golden_ratio;
@@ -161,7 +162,7 @@ static std::vector<float> relax_and_average(const Options& o, const P::Correctio
         const double sl = c.scale(r.leaf_level);
         const int d = r.leaf_direction, e = (d + 5) % 20;
         const unsigned is = unsigned(P::fibonacci_value(r.leaf_code & ((1u << o.structural_bits) - 1), o.structural_bits));
-        const unsigned iv = P::importance_index(r.importance, o.bins);
+        const unsigned iv = importance_bins(r.importance);
         const std::size_t k = iv * columns + is;
         const double w = pushed[i] ? push_weight : 1.;
         sum[2 * k] += w * (dx * u.x[d] + dy * u.y[d]) / sl;

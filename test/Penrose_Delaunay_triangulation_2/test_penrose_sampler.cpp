@@ -20,6 +20,7 @@
 
 #include <cmath>
 #include <limits>
+#include <random>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -166,6 +167,32 @@ TEST(Tiles, FCodesAreZeckendorfAndThresholdsDistinct)
   }
   EXPECT_GT(samples, 5000u);
   EXPECT_EQ(thresholds.size(), samples);
+}
+
+// The importance index (the correction table's row) is the step of
+// log_{phi^2}(1 + sqrt(5) i) within its level: checked against that
+// logarithm in long double, away from the steps' bounds, where rounding
+// decides.
+TEST(Tiles, ImportanceBinsFollowTheLogarithm)
+{
+  const long double log_phi2 = std::log(static_cast<long double>(CGAL::internal::Penrose::golden_ratio) *
+                                        static_cast<long double>(CGAL::internal::Penrose::golden_ratio));
+  std::mt19937_64 random(7);
+  std::uniform_real_distribution<double> exponent(-4., 12.5);  // up to the deepest level
+  for(unsigned bins : {1u, 5u, 21u, 64u}) {
+    const CGAL::internal::Penrose::Importance_bins index(bins);
+    std::size_t checked = 0;
+    for(int k = 0; k < 200000; ++k) {
+      const double i = std::pow(10., exponent(random));
+      const long double steps = std::log1p(std::sqrt(5.L) * i) / log_phi2 * bins;
+      const long double within = steps - std::floor(steps);
+      if(within < 1e-9L || within > 1. - 1e-9L) continue;
+      ASSERT_EQ(index(i), static_cast<unsigned>(static_cast<unsigned long long>(std::floor(steps)) % bins)) << i;
+      ++checked;
+    }
+    EXPECT_GT(checked, 199000u);
+    EXPECT_EQ(index(0.), 0u);
+  }
 }
 
 TEST(Tiles, TreeAndStreamingSamplerAgreeBitForBit)

@@ -9,10 +9,15 @@
 
 #include <CGAL/Penrose_Delaunay_triangulation_2/internal/Penrose_rules.h>
 
+#include <CGAL/assertions.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
+#include <limits>
+#include <vector>
 
 namespace CGAL {
 namespace internal {
@@ -79,15 +84,53 @@ inline unsigned number_of_structural_indices(int bits)
   return static_cast<unsigned>(fibonacci().fib[bits + 2]);
 }
 
-// Position of importance i within its level, in `bins` equal steps of
-// log_{phi^2}(1 + sqrt(5) i); it returns to 0 where the required level rises.
-inline unsigned importance_index(double i, unsigned bins)
+// Position of an importance i within its level, in `bins` equal steps of
+// log_{phi^2}(1 + sqrt(5) i): it returns to 0 where the required level rises.
+// The steps' bounds are tabulated (rounded to doubles), so that an index
+// costs a rough logarithm from the bits of the double and a comparison or
+// two, not a log1p per sample.
+class Importance_bins
 {
-  static const double inv_log_phi2 = 1. / std::log(golden_ratio * golden_ratio);
-  const double l = std::log1p(std::sqrt(5.) * i) * inv_log_phi2;
-  const double f = l - std::floor(l);
-  return std::min(bins - 1, static_cast<unsigned>(f * bins));
-}
+public:
+  explicit Importance_bins(unsigned bins)
+    : bins_(bins), steps_per_log2_(double(bins) / std::log2(golden_ratio * golden_ratio))
+  {
+    const long double phi2 = static_cast<long double>(golden_ratio) * static_cast<long double>(golden_ratio);
+    const std::size_t steps = std::size_t(bins) * (max_level + 2);
+    bound_.resize(steps + 1);
+    bin_.resize(steps + 1);
+    for(std::size_t k = 0; k < steps; ++k) {
+      bound_[k] = static_cast<double>((std::pow(phi2, static_cast<long double>(k) / bins) - 1.L) / std::sqrt(5.L));
+      bin_[k] = unsigned(k % bins);
+    }
+    bound_[steps] = std::numeric_limits<double>::infinity();
+    bin_[steps] = bin_[steps - 1];
+  }
+
+  unsigned number_of_bins() const { return bins_; }
+
+  // the bin of i, from 0 to the least importance that needs more than max_level levels
+  unsigned operator()(double i) const
+  {
+    CGAL_precondition(i >= 0. && i <= fibonacci().level_importance[max_level + 1]);
+    // log2(x) for x >= 1 is at most 0.09 above its exponent plus its
+    // mantissa's fraction: the estimate is off by at most two steps
+    const double x = 1. + std::sqrt(5.) * i;
+    std::uint64_t bits;
+    std::memcpy(&bits, &x, sizeof bits);
+    const double log2x = double(int(bits >> 52) - 1023) + double(bits & ((std::uint64_t(1) << 52) - 1)) * 0x1p-52;
+    std::size_t k = std::size_t((std::min)(log2x * steps_per_log2_, double(bound_.size() - 1)));
+    while(k > 0 && i < bound_[k]) --k;
+    while(i >= bound_[k + 1]) ++k;
+    return bin_[k];
+  }
+
+private:
+  unsigned bins_;
+  double steps_per_log2_;
+  std::vector<double> bound_;  // bound_[k]: least importance of step k, counted from importance 0
+  std::vector<unsigned> bin_;  // bin of step k
+};
 
 } // namespace Penrose
 } // namespace internal

@@ -65,7 +65,8 @@ public:
                    Density density, Density_bound bound,
                    double points_per_density_unit, const Correction_table* table)
     : xmin_(xmin), ymin_(ymin), xmax_(xmax), ymax_(ymax),
-      density_(std::move(density)), bound_(std::move(bound)), table_(table)
+      density_(std::move(density)), bound_(std::move(bound)), table_(table),
+      importance_bins_(table ? table->importance_bins : 21u)
   {
     check_region(xmin, ymin, xmax, ymax);
     root_scale_ = 2. * (std::max)(xmax - xmin, ymax - ymin);
@@ -86,7 +87,6 @@ public:
     margin_factor_ = (std::max)(1., table_ == nullptr ? 0. : table_->max_length());
     max_importance_ = fibonacci().level_importance[max_level + 1];
     structural_bits_ = table_ ? table_->structural_bits : default_structural_bits;
-    importance_bins_ = table_ ? table_->importance_bins : 21u;
     structural_index_.resize(std::size_t(1) << structural_bits_);
     for(std::size_t c = 0; c < structural_index_.size(); ++c)
       structural_index_[c] = unsigned(fibonacci_value(c, structural_bits_));
@@ -181,7 +181,7 @@ public:
     s.leaf_code = b.code << (2 * shift);
     s.leaf_direction = static_cast<std::uint8_t>((b.direction + 10 * shift) % 20);
     s.structural_index = structural_index_[s.leaf_code & (structural_index_.size() - 1)];
-    s.importance_index = importance_index(importance, importance_bins_);
+    s.importance_index = importance_bins_(importance);
     s.x = x; s.y = y;
     if(table_ != nullptr && table_->vectors != nullptr) {
       const float* ab = table_->at(s.importance_index, s.structural_index);
@@ -237,7 +237,7 @@ private:
   double margin_factor_;
   double max_importance_;  // beyond it the importance needs more than max_level levels
   int structural_bits_;
-  unsigned importance_bins_;
+  Importance_bins importance_bins_;
   std::vector<unsigned> structural_index_;  // Fibonacci value of every low code
   std::array<double, max_level + 2> scale_;
   std::array<double, 3> root_x_, root_y_;
