@@ -93,40 +93,36 @@ class Importance_bins
 {
 public:
   explicit Importance_bins(unsigned bins)
-    : bins_(bins), steps_per_log2_(double(bins) / std::log2(golden_ratio * golden_ratio))
+    : steps_per_log2_(double(bins) / std::log2(golden_ratio * golden_ratio))
   {
     const long double phi2 = static_cast<long double>(golden_ratio) * static_cast<long double>(golden_ratio);
     const std::size_t steps = std::size_t(bins) * (max_level + 2);
     bound_.resize(steps + 1);
-    bin_.resize(steps + 1);
+    bin_.resize(steps);
     for(std::size_t k = 0; k < steps; ++k) {
       bound_[k] = static_cast<double>((std::pow(phi2, static_cast<long double>(k) / bins) - 1.L) / std::sqrt(5.L));
       bin_[k] = unsigned(k % bins);
     }
     bound_[steps] = std::numeric_limits<double>::infinity();
-    bin_[steps] = bin_[steps - 1];
   }
-
-  unsigned number_of_bins() const { return bins_; }
 
   // the bin of i, from 0 to the least importance that needs more than max_level levels
   unsigned operator()(double i) const
   {
     CGAL_precondition(i >= 0. && i <= fibonacci().level_importance[max_level + 1]);
-    // log2(x) for x >= 1 is at most 0.09 above its exponent plus its
-    // mantissa's fraction: the estimate is off by at most two steps
+    // log2(x) for x >= 1 exceeds its exponent plus its mantissa's fraction by
+    // less than 0.09: the estimate is at most 0.09 steps_per_log2_ steps low
     const double x = 1. + std::sqrt(5.) * i;
     std::uint64_t bits;
     std::memcpy(&bits, &x, sizeof bits);
     const double log2x = double(int(bits >> 52) - 1023) + double(bits & ((std::uint64_t(1) << 52) - 1)) * 0x1p-52;
-    std::size_t k = std::size_t((std::min)(log2x * steps_per_log2_, double(bound_.size() - 1)));
+    std::size_t k = std::size_t((std::min)(log2x * steps_per_log2_, double(bin_.size() - 1)));
     while(k > 0 && i < bound_[k]) --k;
     while(i >= bound_[k + 1]) ++k;
     return bin_[k];
   }
 
 private:
-  unsigned bins_;
   double steps_per_log2_;
   std::vector<double> bound_;  // bound_[k]: least importance of step k, counted from importance 0
   std::vector<unsigned> bin_;  // bin of step k
