@@ -38,6 +38,16 @@ typedef benchmark_support::Hierarchy<K> Hierarchy;
 using benchmark_support::median;
 using benchmark_support::now;
 
+static bool is_input(const std::string& input) { return input == "constant" || input == "ramp"; }
+
+// a number of points: at least 1, at most the sampler's maximum_number below
+static bool is_size(const std::string& n)
+{
+  char* end = nullptr;
+  const double v = std::strtod(n.c_str(), &end);
+  return end != n.c_str() && *end == '\0' && v >= 1. && v <= 1e9;
+}
+
 static Sampler make_sampler(double n, const std::string& input)
 {
   const K::Iso_rectangle_2 unit(0, 0, 1, 1);
@@ -142,12 +152,19 @@ static int once(double n, const std::string& input)
 int main(int argc, char** argv)
 {
   const std::string mode = argc > 1 ? argv[1] : "speed";
-  if(mode == "speed")
-    return speed(argc > 2 ? std::atof(argv[2]) : 1e6, argc > 3 ? argv[3] : "constant", argc > 4 ? std::atoi(argv[4]) : 5);
-  if(mode == "memory") return memory(argc > 2 ? argv[2] : "penrose", argc > 3 ? std::atof(argv[3]) : 1e6);
-  if(mode == "scaling") return scaling(argc > 2 ? argv[2] : "constant");
-  if(mode == "once") return once(argc > 2 ? std::atof(argv[2]) : 1e6, argc > 3 ? argv[3] : "constant");
-  std::cerr << "usage: triangulation_benchmark speed [N] [constant|ramp] [runs] | memory penrose|cgal [N] | "
-               "scaling [input] | once [N] [input]\n";
-  return 2;
+  auto arg = [&](int i, const char* otherwise) { return std::string(argc > i ? argv[i] : otherwise); };
+  const bool valid =
+    (mode == "speed" && is_size(arg(2, "1e6")) && is_input(arg(3, "constant")) && std::atoi(arg(4, "5").c_str()) >= 1) ||
+    (mode == "memory" && (arg(2, "penrose") == "penrose" || arg(2, "penrose") == "cgal") && is_size(arg(3, "1e6"))) ||
+    (mode == "scaling" && is_input(arg(2, "constant"))) ||
+    (mode == "once" && is_size(arg(2, "1e6")) && is_input(arg(3, "constant")));
+  if(!valid) {
+    std::cerr << "usage: triangulation_benchmark speed [N] [constant|ramp] [runs] | memory penrose|cgal [N] | "
+                 "scaling [constant|ramp] | once [N] [constant|ramp]\n";
+    return 2;
+  }
+  if(mode == "speed") return speed(std::atof(arg(2, "1e6").c_str()), arg(3, "constant"), std::atoi(arg(4, "5").c_str()));
+  if(mode == "memory") return memory(arg(2, "penrose"), std::atof(arg(3, "1e6").c_str()));
+  if(mode == "scaling") return scaling(arg(2, "constant"));
+  return once(std::atof(arg(2, "1e6").c_str()), arg(3, "constant"));
 }
