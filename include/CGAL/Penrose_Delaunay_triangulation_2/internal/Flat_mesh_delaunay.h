@@ -44,12 +44,18 @@ inline Oriented_side perturbed_side_of_oriented_circle(const Epick::Point_2& p0,
 }
 
 // Flips edge i of face f if it is not locally Delaunay, and then every edge
-// that this makes suspect, depth first. Returns the number of flips.
-inline std::size_t flip_from(Flat_mesh& m, Flat_mesh::Index f0, int i0,
+// that this makes suspect, depth first. Returns the number of flips. An
+// edge both of whose faces come after face `sweep` is left to the sweep of
+// make_delaunay(), which tests it when it reaches the first of them.
+inline std::size_t flip_from(Flat_mesh& m, Flat_mesh::Index f0, int i0, Flat_mesh::Index sweep,
                              std::vector<std::pair<Flat_mesh::Index, int>>& stack)
 {
   typedef Flat_mesh::Index Index;
   std::size_t flips = 0;
+  auto suspect = [&](Index h, int k) {
+    const Index across = m.faces[h].n[k];
+    if(across != Flat_mesh::null && (h <= sweep || across <= sweep)) stack.emplace_back(h, k);
+  };
   stack.emplace_back(f0, i0);
   while(!stack.empty()) {
     const Index f = stack.back().first;
@@ -64,16 +70,16 @@ inline std::size_t flip_from(Flat_mesh& m, Flat_mesh::Index f0, int i0,
       continue;
     m.flip(f, i);  // f = (a, b, c), g = (d, c, b) become (a, b, d), (a, d, c)
     ++flips;
-    stack.emplace_back(f, 0); stack.emplace_back(f, 2);
-    stack.emplace_back(g, 0); stack.emplace_back(g, 1);
+    suspect(f, 0); suspect(f, 2); suspect(g, 0); suspect(g, 1);
   }
   return flips;
 }
 
-// Flips until Delaunay; returns the number of flips. The faces are visited
-// in memory order and each flip's consequences are settled at once: an edge
-// can only stop being locally Delaunay when one of its faces changes, and
-// then it is on the stack.
+// Flips until Delaunay; returns the number of flips. The faces are swept in
+// memory order, each edge tested from its first face, and each flip's
+// consequences are settled at once: an edge can only stop being locally
+// Delaunay when one of its faces changes, and then it is either on the
+// stack or still ahead of the sweep.
 inline std::size_t make_delaunay(Flat_mesh& m)
 {
   typedef Flat_mesh::Index Index;
@@ -102,7 +108,7 @@ inline std::size_t make_delaunay(Flat_mesh& m)
     }
     if(!m.face_alive[f]) continue;
     for(int i = 0; i < 3; ++i)
-      if(m.faces[f].n[i] != Flat_mesh::null && f < m.faces[f].n[i]) flips += flip_from(m, f, i, stack);
+      if(m.faces[f].n[i] != Flat_mesh::null && f < m.faces[f].n[i]) flips += flip_from(m, f, i, f, stack);
   }
   return flips;
 }
