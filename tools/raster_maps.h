@@ -15,8 +15,6 @@
 
 namespace penrose_tools {
 
-// A raster of `channels` values a pixel stretched over the rectangle
-// [x0, x1] x [y0, y1], row 0 at the top; pixel (i, j) has its centre at
 // Index i clamped to [0, n).
 inline std::size_t clamp_index(long i, std::size_t n) { return std::size_t(std::min(std::max(i, 0L), long(n) - 1)); }
 
@@ -26,6 +24,8 @@ inline double clamped_at(const std::vector<double>& v, std::size_t w, std::size_
   return v[clamp_index(j, h) * w + clamp_index(i, w)];
 }
 
+// A raster of `channels` values a pixel stretched over the rectangle
+// [x0, x1] x [y0, y1], row 0 at the top; pixel (i, j) has its centre at
 // u = i + 1/2, v = j + 1/2 in pixel coordinates.
 template <class T>
 struct Raster

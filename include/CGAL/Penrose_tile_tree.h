@@ -165,8 +165,7 @@ private:
       const Vertex& v = vertices_[tiles_[t].vertices[i]];
       x[i] = v.x; y[i] = v.y; importance[i] = v.importance;
     }
-    const Tile& tt = tiles_[t];
-    return context_.should_refine(tt.level, internal::Penrose::fibonacci_value(tt.f_code, 2 * tt.level), x, y, importance);
+    return context_.should_refine(tiles_[t].level, tile_threshold(t), x, y, importance);
   }
 
   // A same-level neighbour that is already subdivided, or null_index.
@@ -241,14 +240,10 @@ private:
       }
   }
 
-  // Fibonacci value of a tile's F-code, from the code itself.
+  // Fibonacci value of a tile's F-code, all 2 level bits of it.
   std::uint64_t tile_threshold(Index t) const
   {
-    const Tile& tt = tiles_[t];
-    std::uint64_t v = 0;
-    for(int l = 1; l <= tt.level; ++l)
-      v += internal::Penrose::pair_weight(std::uint8_t(tt.f_code >> (2 * (tt.level - l)) & 3u), l);
-    return v;
+    return internal::Penrose::fibonacci_value(tiles_[t].f_code, 2 * tiles_[t].level);
   }
 
   internal::Penrose::Sampling_context context_;

@@ -299,13 +299,14 @@ private:
     const Tile& t = frontier_[k];
     const Work& w = work_[k];
     const Subdivision_rule& r = rule(t.tile_type());
-    unsigned mask = 0;
-    for(int n = 0; n < r.number_of_new_vertices; ++n)
-      if(w.new_vertices[slot(r.new_vertices[n].edge)] != null) mask |= 1u << n;
+    std::array<Index, 5> v = {{t.corners[0], t.corners[1], t.corners[2], null, null}};
+    unsigned mask = 0;  // the new vertices present
+    for(int n = 0; n < r.number_of_new_vertices; ++n) {
+      v[3 + n] = w.new_vertices[slot(r.new_vertices[n].edge)];
+      if(v[3 + n] != null) mask |= 1u << n;
+    }
     const Split_pattern& p = split_patterns(t.tile_type(), mask);
     const Flat_mesh::Face parent = m_.faces[t.face];
-    std::array<Index, 5> v = {{t.corners[0], t.corners[1], t.corners[2], null, null}};
-    for(int n = 0; n < r.number_of_new_vertices; ++n) v[3 + n] = w.new_vertices[slot(r.new_vertices[n].edge)];
 
     // a face at each split vertex before this tile's triangles take it over:
     // where the tile across came first, one of the triangles it left
