@@ -333,6 +333,8 @@ private:
     };
     for(std::size_t f = 0; f < m.faces.size(); ++f)
       if(m.face_alive[f]) {
+        if(f + 16 < m.faces.size())
+          for(Index v : m.faces[f + 16].v) CGAL_PENROSE_PREFETCH(&vh[v]);
         const auto& F = m.faces[f];
         keep_handle(f, tds.create_face(vh[F.v[0]], vh[F.v[1]], vh[F.v[2]]));
       }
@@ -361,8 +363,11 @@ private:
           bh.second->set_neighbor(1, other.second);
           other.second->set_neighbor(2, bh.second);
         }
-    for(std::size_t v = 0; v < vh.size(); ++v)
+    for(std::size_t v = 0; v < vh.size(); ++v) {
+      if(v + 16 < vh.size() && m.vertex_face[v + 16] != Flat_mesh::null)
+        CGAL_PENROSE_PREFETCH(&m.faces[m.vertex_face[v + 16]]);
       if(vh[v] != Vertex_handle()) vh[v]->set_face(fh(m.vertex_face[v]));
+    }
     infinite->set_face(hull.front().second);
     return vh;
   }
