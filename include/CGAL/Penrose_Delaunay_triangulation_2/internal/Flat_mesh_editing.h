@@ -85,8 +85,12 @@ public:
         state[v] = 1;
       }
     std::vector<Index> folded, next;
-    for(Index f = 0; f < m_.faces.size(); ++f)
+    const Index nf = Index(m_.faces.size());
+    for(Index f = 0; f < nf; ++f) {
+      if(f + 16 < nf)
+        for(Index u : m_.faces[f + 16].v) CGAL_PENROSE_PREFETCH(&m_.points[u]);
       if(m_.face_alive[f] && !positive(f)) folded.push_back(f);
+    }
     while(!folded.empty()) {
       next.clear();
       for(Index f : folded) {
