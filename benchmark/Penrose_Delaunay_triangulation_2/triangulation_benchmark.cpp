@@ -23,7 +23,6 @@
 
 #include "benchmark_support.h"
 
-#include <algorithm>
 #include <cstdlib>
 #include <iostream>
 #include <string>

@@ -303,6 +303,7 @@ private:
   template <class Lift>
   internal::Penrose::Large_vector<Vertex_handle> write_tds(Flat_mesh& m, const Lift& lift)
   {
+    constexpr std::size_t ahead = Flat_mesh::fetch_distance;
     Triangulation_data_structure& tds = this->tds();
     tds.clear();
     const Vertex_handle infinite = tds.create_vertex();
@@ -333,15 +334,15 @@ private:
     };
     for(std::size_t f = 0; f < m.faces.size(); ++f)
       if(m.face_alive[f]) {
-        if(f + 16 < m.faces.size())
-          for(Index v : m.faces[f + 16].v) CGAL_PENROSE_PREFETCH(&vh[v]);
+        if(f + ahead < m.faces.size())
+          for(Index v : m.faces[f + ahead].v) CGAL_PENROSE_PREFETCH(&vh[v]);
         const auto& F = m.faces[f];
         keep_handle(f, tds.create_face(vh[F.v[0]], vh[F.v[1]], vh[F.v[2]]));
       }
     std::vector<std::pair<Vertex_handle, Face_handle>> hull;  // infinite face (inf, b, a), keyed by b
     for(std::size_t f = 0; f < m.faces.size(); ++f) {
-      if(f + 16 < m.faces.size())
-        for(Index g : m.faces[f + 16].n)
+      if(f + ahead < m.faces.size())
+        for(Index g : m.faces[f + ahead].n)
           if(g != Flat_mesh::null) CGAL_PENROSE_PREFETCH(&m.faces[g]);
       if(m.face_alive[f]) {
         const Face_handle F = fh(f);
@@ -364,8 +365,8 @@ private:
           other.second->set_neighbor(2, bh.second);
         }
     for(std::size_t v = 0; v < vh.size(); ++v) {
-      if(v + 16 < vh.size() && m.vertex_face[v + 16] != Flat_mesh::null)
-        CGAL_PENROSE_PREFETCH(&m.faces[m.vertex_face[v + 16]]);
+      if(v + ahead < vh.size() && m.vertex_face[v + ahead] != Flat_mesh::null)
+        CGAL_PENROSE_PREFETCH(&m.faces[m.vertex_face[v + ahead]]);
       if(vh[v] != Vertex_handle()) vh[v]->set_face(fh(m.vertex_face[v]));
     }
     infinite->set_face(hull.front().second);

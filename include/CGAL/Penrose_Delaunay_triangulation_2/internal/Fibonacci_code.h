@@ -30,15 +30,16 @@ constexpr int max_level = 30;
 struct Fibonacci_tables
 {
   std::array<std::uint64_t, 2 * max_level + 4> fib;      // fib[n] = F(n), F(1) = F(2) = 1
-  // level_importance[m]: the least importance whose required level is m or more
+  // level_importance[m]: the least importance whose required level (C.5 of
+  // the sampler facts) is m or more; level 1 needs any positive importance
   std::array<double, max_level + 2> level_importance;
   Fibonacci_tables()
   {
     fib[0] = 0; fib[1] = 1;
     for(std::size_t n = 2; n < fib.size(); ++n) fib[n] = fib[n - 1] + fib[n - 2];
-    // required_level(I) >= m  <=>  sqrt(5) I + 1 >= phi^(2m)   (m >= 2)
+    // the required level is m or more  <=>  sqrt(5) I + 1 >= phi^(2m)   (m >= 2)
     level_importance[0] = 0.;
-    level_importance[1] = 0.; // any positive importance (tested with >, see below)
+    level_importance[1] = 0.;
     for(int m = 2; m < max_level + 2; ++m)
       level_importance[m] = (std::pow(static_cast<long double>(golden_ratio), 2 * m) - 1.L)
                             / std::sqrt(5.L);
@@ -55,16 +56,6 @@ inline std::uint64_t pair_weight(std::uint8_t pair, int level)
 {
   const Fibonacci_tables& t = fibonacci();
   return (pair & 2 ? t.fib[2 * level] : 0) + (pair & 1 ? t.fib[2 * level + 1] : 0);
-}
-
-// The level required by importance i (C.5 of the sampler facts).
-inline int required_level(double i)
-{
-  if(!(i > 0.)) return 0;
-  const auto& li = fibonacci().level_importance;
-  int m = 1;
-  while(m <= max_level && i >= li[m + 1]) ++m;
-  return m;
 }
 
 // Fibonacci value of the `bits` newest bits of a code; the oldest weighs 1.

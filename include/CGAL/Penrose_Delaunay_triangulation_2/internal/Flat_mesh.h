@@ -37,6 +37,8 @@ public:
   typedef std::uint32_t Index;
   typedef Exact_predicates_inexact_constructions_kernel::Point_2 Point;
   static constexpr Index null = 0xffffffffu;
+  // how many elements ahead a walk in memory order fetches what it will read
+  static constexpr Index fetch_distance = 16;
 
   struct Face
   {

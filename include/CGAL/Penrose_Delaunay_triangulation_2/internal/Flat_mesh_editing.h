@@ -87,8 +87,8 @@ public:
     std::vector<Index> folded, next;
     const Index nf = Index(m_.faces.size());
     for(Index f = 0; f < nf; ++f) {
-      if(f + 16 < nf)
-        for(Index u : m_.faces[f + 16].v) CGAL_PENROSE_PREFETCH(&m_.points[u]);
+      if(f + Flat_mesh::fetch_distance < nf)
+        for(Index u : m_.faces[f + Flat_mesh::fetch_distance].v) CGAL_PENROSE_PREFETCH(&m_.points[u]);
       if(m_.face_alive[f] && !positive(f)) folded.push_back(f);
     }
     while(!folded.empty()) {
