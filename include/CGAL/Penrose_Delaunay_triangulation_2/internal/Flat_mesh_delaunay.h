@@ -43,7 +43,16 @@ inline Oriented_side perturbed_side_of_oriented_circle(const Epick::Point_2& p0,
   return ON_NEGATIVE_SIDE;
 }
 
-// Flips edge i of face f if it is not locally Delaunay, and then every edge
+// Whether edge i of face f is not locally Delaunay (the vertex opposite it
+// is strictly inside the circle of the face across), which must exist.
+inline bool is_flippable(const Flat_mesh& m, Flat_mesh::Index f, int i)
+{
+  const Flat_mesh::Face& G = m.faces[m.faces[f].n[i]];
+  return perturbed_side_of_oriented_circle(m.points[G.v[0]], m.points[G.v[1]], m.points[G.v[2]],
+                                           m.points[m.faces[f].v[i]]) == ON_POSITIVE_SIDE;
+}
+
+// Flips edge i of face f, which is not locally Delaunay, and then every edge
 // that this makes suspect, depth first. Returns the number of flips. An
 // edge both of whose faces come after face `sweep` is left to the sweep of
 // make_delaunay(), which tests it when it reaches the first of them.
@@ -52,25 +61,20 @@ inline std::size_t flip_from(Flat_mesh& m, Flat_mesh::Index f0, int i0, Flat_mes
 {
   typedef Flat_mesh::Index Index;
   std::size_t flips = 0;
-  auto suspect = [&](Index h, int k) {
-    const Index across = m.faces[h].n[k];
-    if(across != Flat_mesh::null && (h <= sweep || across <= sweep)) stack.emplace_back(h, k);
-  };
-  stack.emplace_back(f0, i0);
-  while(!stack.empty()) {
-    const Index f = stack.back().first;
-    const int i = stack.back().second;
-    stack.pop_back();
+  auto flip = [&](Index f, int i) {
     const Index g = m.faces[f].n[i];
-    if(g == Flat_mesh::null) continue;
-    const Flat_mesh::Face& G = m.faces[g];
-    const Index a = m.faces[f].v[i];
-    if(perturbed_side_of_oriented_circle(m.points[G.v[0]], m.points[G.v[1]], m.points[G.v[2]], m.points[a])
-       != ON_POSITIVE_SIDE)
-      continue;
     m.flip(f, i);  // f = (a, b, c), g = (d, c, b) become (a, b, d), (a, d, c)
     ++flips;
-    suspect(f, 0); suspect(f, 2); suspect(g, 0); suspect(g, 1);
+    for(const auto& [h, k] : {std::make_pair(f, 0), std::make_pair(f, 2), std::make_pair(g, 0), std::make_pair(g, 1)}) {
+      const Index across = m.faces[h].n[k];
+      if(across != Flat_mesh::null && (h <= sweep || across <= sweep)) stack.emplace_back(h, k);
+    }
+  };
+  flip(f0, i0);
+  while(!stack.empty()) {
+    const auto [f, i] = stack.back();
+    stack.pop_back();
+    if(m.faces[f].n[i] != Flat_mesh::null && is_flippable(m, f, i)) flip(f, i);
   }
   return flips;
 }
@@ -107,8 +111,11 @@ inline std::size_t make_delaunay(Flat_mesh& m)
           CGAL_PENROSE_PREFETCH(&m.points[m.faces[F.n[i]].v[m.index_of_neighbor(F.n[i], h)]]);
     }
     if(!m.face_alive[f]) continue;
-    for(int i = 0; i < 3; ++i)
-      if(m.faces[f].n[i] != Flat_mesh::null && f < m.faces[f].n[i]) flips += flip_from(m, f, i, f, stack);
+    // tested here, not through the stack: most edges do not flip
+    for(int i = 0; i < 3; ++i) {
+      const Index g = m.faces[f].n[i];
+      if(g != Flat_mesh::null && f < g && is_flippable(m, f, i)) flips += flip_from(m, f, i, f, stack);
+    }
   }
   return flips;
 }
