@@ -180,7 +180,8 @@ public:
     faces[g].n = {{ng_b, nf_b, f}};
     if(ng_c != null) faces[ng_c].n[index_of_neighbor(ng_c, g)] = f;
     if(nf_b != null) faces[nf_b].n[index_of_neighbor(nf_b, f)] = g;
-    vertex_face[a] = f; vertex_face[b] = f; vertex_face[d] = f; vertex_face[c] = g;
+    // a and d keep whichever face they had; b leaves g, c leaves f
+    vertex_face[b] = f; vertex_face[c] = g;
   }
 
 private:
