@@ -2,10 +2,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // What the benchmark programs share: a clock, medians, the peak resident
-// memory, and the Devillers hierarchy they compare against.
+// memory, the Devillers hierarchy they compare against, and the samplers of
+// the two inputs of the speed bars.
 
 #ifndef PENROSE_BENCHMARK_SUPPORT_H
 #define PENROSE_BENCHMARK_SUPPORT_H
+
+#include <CGAL/Penrose_importance_sampler.h>
 
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Triangulation_hierarchy_2.h>
@@ -14,6 +17,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace benchmark_support {
@@ -40,6 +45,19 @@ inline double peak_resident_bytes()
   rusage u;
   getrusage(RUSAGE_SELF, &u);
   return double(u.ru_maxrss) * 1024.;
+}
+
+// A sampler of about n points on the unit square, for the constant density
+// or the ramp of the paper's Figure 7 (`input`: "constant" or "ramp").
+template <class K>
+CGAL::Penrose_importance_sampler<K> unit_square_sampler(const std::string& input, double n)
+{
+  typedef typename K::Point_2 Point;
+  const typename K::Iso_rectangle_2 unit(0, 0, 1, 1);
+  auto np = CGAL::parameters::number_of_output_points(std::size_t(n)).maximum_number(std::size_t(1e9));
+  if(input == "constant") return CGAL::Penrose_importance_sampler<K>(unit, [](const Point&) { return 1.; }, np);
+  if(input == "ramp") return CGAL::Penrose_importance_sampler<K>(unit, [](const Point& p) { return p.x(); }, np);
+  throw std::invalid_argument("unknown input " + input);
 }
 
 } // namespace benchmark_support

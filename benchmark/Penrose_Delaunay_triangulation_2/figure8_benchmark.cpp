@@ -63,8 +63,6 @@ Sampler make_sampler(const std::string& input, double n, const std::string& imag
 {
   const K::Iso_rectangle_2 unit(0, 0, 1, 1);
   auto np = CGAL::parameters::number_of_output_points(std::size_t(n)).maximum_number(std::size_t(1e9));
-  if(input == "constant") return Sampler(unit, [](const Point&) { return 1.; }, np);
-  if(input == "ramp") return Sampler(unit, [](const Point& p) { return p.x(); }, np);
   if(input == "terrain") return Sampler(unit, terrain_density, np);
   if(input == "image") {
     CGAL::IO::Luminance_image img = CGAL::IO::read_luminance_image(image);
@@ -73,7 +71,7 @@ Sampler make_sampler(const std::string& input, double n, const std::string& imag
     return Sampler(unit, [d](const Point& p) { return (*d)(p); },
       CGAL::parameters::density_upper_bound([d](const K::Iso_rectangle_2& b) { return d->upper_bound(b); }, np));
   }
-  throw std::invalid_argument("unknown input " + input);
+  return benchmark_support::unit_square_sampler<K>(input, n);
 }
 
 // Runs `method` on the points; returns the number of vertices it made.

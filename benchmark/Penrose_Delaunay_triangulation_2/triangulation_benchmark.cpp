@@ -47,19 +47,11 @@ static bool is_size(const std::string& n)
   return end != n.c_str() && *end == '\0' && v >= 1. && v <= 1e9;
 }
 
-static Sampler make_sampler(double n, const std::string& input)
-{
-  const K::Iso_rectangle_2 unit(0, 0, 1, 1);
-  auto np = CGAL::parameters::number_of_output_points(std::size_t(n)).maximum_number(std::size_t(1e9));
-  if(input == "ramp") return Sampler(unit, [](const Point& p) { return p.x(); }, np);
-  return Sampler(unit, [](const Point&) { return 1.; }, np);
-}
-
 static int speed(double n, const std::string& input, int runs)
 {
   std::vector<double> tp, ts, tc, th;
   for(int r = 0; r < runs; ++r) {
-    const Sampler sampler = make_sampler(n, input);
+    const Sampler sampler = benchmark_support::unit_square_sampler<K>(input, n);
     double t0 = now();
     std::vector<Point> points;
     points.reserve(std::size_t(sampler.expected_number_of_points() * 1.05));
@@ -98,7 +90,7 @@ static int speed(double n, const std::string& input, int runs)
 
 static int memory(const std::string& which, double n)
 {
-  const Sampler sampler = make_sampler(n, "constant");
+  const Sampler sampler = benchmark_support::unit_square_sampler<K>("constant", n);
   std::size_t count = 0;
   if(which == "penrose") {
     Pdt pdt(sampler);
@@ -124,7 +116,7 @@ static int scaling(const std::string& input)
     std::vector<double> t;
     std::size_t count = 0;
     for(int r = 0; r < 5; ++r) {
-      const Sampler sampler = make_sampler(sizes[i], input);
+      const Sampler sampler = benchmark_support::unit_square_sampler<K>(input, sizes[i]);
       const double t0 = now();
       Pdt pdt(sampler);
       t.push_back(now() - t0);
@@ -139,7 +131,7 @@ static int scaling(const std::string& input)
 
 static int once(double n, const std::string& input)
 {
-  const Sampler sampler = make_sampler(n, input);
+  const Sampler sampler = benchmark_support::unit_square_sampler<K>(input, n);
   const double t0 = now();
   Pdt pdt(sampler);
   const double t = now() - t0;
