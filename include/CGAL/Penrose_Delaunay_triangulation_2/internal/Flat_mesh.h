@@ -160,7 +160,7 @@ public:
     inherit_neighbor(g, 1, F.n[ccw(i)], f);
     link(g, 2, f, 1);                 // shared edge apex-m
     faces[f].n[2] = F.n[cw(i)];       // which still borders f
-    vertex_face[apex] = f; vertex_face[a] = f; vertex_face[m] = f; vertex_face[b] = g;
+    vertex_face[m] = f; vertex_face[b] = g;  // apex and a stay in f
     return g;
   }
 
