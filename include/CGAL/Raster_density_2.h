@@ -63,6 +63,8 @@ public:
     y1_ = to_double(traits_.compute_y_2_object()((region.max)()));
     if(!(x1_ > x0_ && y1_ > y0_))
       throw std::invalid_argument("Raster_density_2: the region is empty or degenerate");
+    u_per_x_ = double(w_) / (x1_ - x0_);
+    v_per_y_ = double(h_) / (y1_ - y0_);
     levels_.push_back(std::move(values));
     build_pyramid();
   }
@@ -75,11 +77,10 @@ public:
   /// The bilinearly interpolated density at `p`.
   double operator()(const Point_2& p) const
   {
-    const double u = pixel_u(to_double(traits_.compute_x_2_object()(p))) - 0.5;
-    const double v = pixel_v(to_double(traits_.compute_y_2_object()(p))) - 0.5;
-    const double fu = std::floor(u), fv = std::floor(v);
-    const double a = u - fu, b = v - fv;
-    const long i = long(fu), j = long(fv);
+    const double u = limited(pixel_u(to_double(traits_.compute_x_2_object()(p))) - 0.5, w_);
+    const double v = limited(pixel_v(to_double(traits_.compute_y_2_object()(p))) - 0.5, h_);
+    const long i = floor_index(u), j = floor_index(v);
+    const double a = u - double(i), b = v - double(j);
     return (1 - a) * (1 - b) * at(i, j) + a * (1 - b) * at(i + 1, j)
          + (1 - a) * b * at(i, j + 1) + a * b * at(i + 1, j + 1);
   }
@@ -93,19 +94,22 @@ public:
     const double bx1 = to_double(traits_.compute_x_2_object()((box.max)()));
     const double by1 = to_double(traits_.compute_y_2_object()((box.max)()));
     // pixels i with centre within one pixel of the box in u, likewise in v
-    const long i0 = clamp_index(long(std::floor(pixel_u(bx0) - 0.5)), w_);
-    const long i1 = clamp_index(long(std::floor(pixel_u(bx1) - 0.5)) + 1, w_);
-    const long j0 = clamp_index(long(std::floor(pixel_v(by1) - 0.5)), h_);
-    const long j1 = clamp_index(long(std::floor(pixel_v(by0) - 0.5)) + 1, h_);
-    // the coarsest level at which the range spans at most two cells each way
-    std::size_t k = 0;
+    const long i0 = clamp_index(floor_index(limited(pixel_u(bx0) - 0.5, w_)), w_);
+    const long i1 = clamp_index(floor_index(limited(pixel_u(bx1) - 0.5, w_)) + 1, w_);
+    const long j0 = clamp_index(floor_index(limited(pixel_v(by1) - 0.5, h_)), h_);
+    const long j1 = clamp_index(floor_index(limited(pixel_v(by0) - 0.5, h_)) + 1, h_);
+    // The finest level at which the range spans at most two cells each way:
+    // not below the one where its width is halved to one cell.
+    std::size_t k = (std::min)(levels_.size() - 1, (std::max)(halvings_to_one(i1 - i0), halvings_to_one(j1 - j0)));
     while(k + 1 < levels_.size() && ((i1 >> k) - (i0 >> k) > 1 || (j1 >> k) - (j0 >> k) > 1)) ++k;
+    // the two cells each way, the same one twice where the range spans one
+    const std::vector<double>& level = levels_[k];
     const std::size_t wk = level_width(k);
-    double m = 0.;
-    for(long j = j0 >> k; j <= (j1 >> k); ++j)
-      for(long i = i0 >> k; i <= (i1 >> k); ++i)
-        m = (std::max)(m, levels_[k][std::size_t(j) * wk + std::size_t(i)]);
-    return m;
+    const std::size_t r0 = std::size_t(j0 >> k) * wk, r1 = std::size_t(j1 >> k) * wk;
+    const std::size_t c0 = std::size_t(i0 >> k), c1 = std::size_t(i1 >> k);
+    const double m = (std::max)((std::max)(level[r0 + c0], level[r0 + c1]), (std::max)(level[r1 + c0], level[r1 + c1]));
+    // the rounding of operator() can exceed its pixels by a few units in the last place
+    return m * (1. + 1e-14);
   }
 
   /// `upper_bound` as a callable, for the `density_upper_bound` named parameter.
@@ -124,9 +128,26 @@ public:
   }
 
 private:
-  double pixel_u(double x) const { return (x - x0_) / (x1_ - x0_) * double(w_); }
-  double pixel_v(double y) const { return (y1_ - y) / (y1_ - y0_) * double(h_); }
+  // the sampler evaluates the density several times per sample: no division here
+  double pixel_u(double x) const { return (x - x0_) * u_per_x_; }
+  double pixel_v(double y) const { return (y1_ - y) * v_per_y_; }
   static long clamp_index(long i, std::size_t n) { return (std::min)((std::max)(i, 0L), long(n) - 1); }
+  // u limited to [-1, n], beyond which the interpolation is clamped anyway
+  // (NaN to -1), so that its floor converts safely to an index
+  static double limited(double u, std::size_t n) { return u >= -1. ? (std::min)(u, double(n)) : -1.; }
+  // the floor of a limited u, without a call to the C library
+  static long floor_index(double u)
+  {
+    const long i = long(u);
+    return double(i) > u ? i - 1 : i;
+  }
+  // the least k with d >> k <= 1
+  static std::size_t halvings_to_one(long d)
+  {
+    std::size_t k = 0;
+    for(unsigned long r = static_cast<unsigned long>(d) >> 1; r != 0; r >>= 1) ++k;
+    return k;
+  }
   double at(long i, long j) const { return levels_[0][std::size_t(clamp_index(j, h_)) * w_ + std::size_t(clamp_index(i, w_))]; }
   std::size_t level_width(std::size_t k) const { return ((w_ - 1) >> k) + 1; }
   std::size_t level_height(std::size_t k) const { return ((h_ - 1) >> k) + 1; }
@@ -150,6 +171,7 @@ private:
   std::size_t w_, h_;
   Traits traits_;
   double x0_, y0_, x1_, y1_;
+  double u_per_x_, v_per_y_;  // pixels per unit
   std::vector<std::vector<double>> levels_;  // levels_[0]: the raster; then 2x2 maxima
 };
 

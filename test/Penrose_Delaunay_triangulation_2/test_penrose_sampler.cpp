@@ -18,6 +18,7 @@
 #include <boost/iterator/function_output_iterator.hpp>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -387,6 +388,78 @@ TEST(Sampler, ConservativeBoundFindsThinFeatures)
   EXPECT_NEAR(with_bound / expected, 1., 0.15);
   EXPECT_LT(with_probes, with_bound);
   (void)line;
+}
+
+// Bilinear interpolation between pixel centres, written out from its
+// definition, over a raster of random values on a region that is not the
+// unit square, with sizes that are not powers of two.
+TEST(Raster, InterpolatesBetweenPixelCentres)
+{
+  const std::size_t w = 37, h = 23;
+  std::mt19937_64 random(7);
+  std::uniform_real_distribution<double> unit(0., 1.);
+  std::vector<double> v(w * h);
+  for(double& x : v) x = 10. * unit(random);
+  const Epick::Iso_rectangle_2 region(-2., 1., 3., 2.5);
+  const CGAL::Raster_density_2<Epick> d(w, h, v, region);
+  auto pixel = [&](long i, long j) {
+    i = std::clamp(i, 0L, long(w) - 1); j = std::clamp(j, 0L, long(h) - 1);
+    return v[std::size_t(j) * w + std::size_t(i)];
+  };
+  auto reference = [&](double x, double y) {
+    const double u = (x + 2.) / 5. * double(w) - 0.5, t = (2.5 - y) / 1.5 * double(h) - 0.5;
+    const double i = std::floor(u), j = std::floor(t), a = u - i, b = t - j;
+    return (1 - a) * (1 - b) * pixel(long(i), long(j)) + a * (1 - b) * pixel(long(i) + 1, long(j))
+         + (1 - a) * b * pixel(long(i), long(j) + 1) + a * b * pixel(long(i) + 1, long(j) + 1);
+  };
+  for(int k = 0; k < 20000; ++k) {
+    // the border and the corners too, where the interpolation is clamped
+    const double x = k < 4 ? (k % 2 ? 3. : -2.) : -2. + 5. * unit(random);
+    const double y = k < 4 ? (k / 2 ? 2.5 : 1.) : 1. + 1.5 * unit(random);
+    ASSERT_NEAR(d(Point(x, y)), reference(x, y), 1e-9) << x << " " << y;
+  }
+  // at a pixel centre, the pixel
+  EXPECT_NEAR(d(Point(-2. + 5. * 10.5 / double(w), 2.5 - 1.5 * 4.5 / double(h))), pixel(10, 4), 1e-9);
+  // far outside, the value at the nearest point of the border
+  EXPECT_NEAR(d(Point(1e300, 1.7)), reference(3., 1.7), 1e-9);
+  EXPECT_NEAR(d(Point(-1e300, -1e300)), pixel(0, long(h) - 1), 1e-9);
+  EXPECT_NEAR(d.upper_bound(Epick::Iso_rectangle_2(-1e300, -1e300, 1e300, 1e300)), *std::max_element(v.begin(), v.end()), 1e-9);
+}
+
+// The max pyramid's bound, over boxes from a fraction of a pixel to more
+// than the region, against the brute-force maximum of the pixels whose
+// interpolation reaches into the box and against the density inside it.
+TEST(Raster, UpperBoundCoversEveryBox)
+{
+  for(const auto& [w, h] : {std::pair<std::size_t, std::size_t>(37, 23), {1, 1}, {64, 64}, {300, 7}}) {
+    std::mt19937_64 random(w * 1000 + h);
+    std::uniform_real_distribution<double> unit(0., 1.);
+    std::vector<double> v(w * h);
+    for(double& x : v) x = unit(random) < 0.02 ? 100. * unit(random) : unit(random);
+    const CGAL::Raster_density_2<Epick> d(w, h, v, unit_square);
+    for(int k = 0; k < 3000; ++k) {
+      const double size = std::pow(10., -4. + 4.5 * unit(random));
+      const double x0 = -0.1 + 1.2 * unit(random), y0 = -0.1 + 1.2 * unit(random);
+      const double x1 = x0 + size * unit(random), y1 = y0 + size * unit(random);
+      const double bound = d.upper_bound(Epick::Iso_rectangle_2(x0, y0, x1, y1));
+      // pixel (i, j) matters where its centre is less than a pixel from the box
+      double pixels = 0.;
+      for(std::size_t j = 0; j < h; ++j)
+        for(std::size_t i = 0; i < w; ++i) {
+          const double cx = (double(i) + 0.5) / double(w), cy = 1. - (double(j) + 0.5) / double(h);
+          if(cx > std::max(x0, 0.) - 1. / double(w) && cx < std::min(x1, 1.) + 1. / double(w) &&
+             cy > std::max(y0, 0.) - 1. / double(h) && cy < std::min(y1, 1.) + 1. / double(h))
+            pixels = std::max(pixels, v[j * w + i]);
+        }
+      ASSERT_GE(bound, pixels) << w << " x " << h << ": box " << x0 << " " << y0 << " " << x1 << " " << y1;
+      for(int s = 0; s < 4; ++s) {
+        const double x = std::clamp(x0 + (x1 - x0) * unit(random), 0., 1.);
+        const double y = std::clamp(y0 + (y1 - y0) * unit(random), 0., 1.);
+        ASSERT_GE(bound, d(Point(x, y)));
+      }
+      ASSERT_LE(bound, *std::max_element(v.begin(), v.end()) * (1. + 1e-13));
+    }
+  }
 }
 
 TEST(Sampler, ThresholdPruningDropsNoActiveSample)
