@@ -8,7 +8,6 @@
 #include <CGAL/number_utils.h>
 
 #include <algorithm>
-#include <cmath>
 #include <cstddef>
 #include <functional>
 #include <limits>
