@@ -43,13 +43,14 @@ public:
   typedef typename Traits::Iso_rectangle_2 Iso_rectangle_2;
 
   /// `values` holds `width * height` values, row after row from the top.
-  /// \throws std::invalid_argument on an empty raster, a size mismatch, or a
-  /// negative, NaN or infinite value.
+  /// \throws std::invalid_argument on an empty raster, a size mismatch, a
+  /// negative, NaN or infinite value, or a region that is empty, degenerate
+  /// or not finite.
   Raster_density_2(std::size_t width, std::size_t height, std::vector<double> values,
                    const Iso_rectangle_2& region, const Traits& traits = Traits())
     : w_(width), h_(height), traits_(traits)
   {
-    if(width == 0 || height == 0 || values.size() != width * height)
+    if(width == 0 || height == 0 || height > values.size() / width || values.size() != width * height)
       throw std::invalid_argument("Raster_density_2: the raster is empty or its size does not match");
     for(std::size_t k = 0; k < values.size(); ++k)
       if(!(values[k] >= 0. && values[k] < std::numeric_limits<double>::infinity()))
@@ -60,8 +61,9 @@ public:
     y0_ = to_double(traits_.compute_y_2_object()((region.min)()));
     x1_ = to_double(traits_.compute_x_2_object()((region.max)()));
     y1_ = to_double(traits_.compute_y_2_object()((region.max)()));
-    if(!(x1_ > x0_ && y1_ > y0_))
-      throw std::invalid_argument("Raster_density_2: the region is empty or degenerate");
+    const double inf = std::numeric_limits<double>::infinity();
+    if(!(x1_ > x0_ && y1_ > y0_ && x1_ - x0_ < inf && y1_ - y0_ < inf))
+      throw std::invalid_argument("Raster_density_2: the region is empty, degenerate or not finite");
     u_per_x_ = double(w_) / (x1_ - x0_);
     v_per_y_ = double(h_) / (y1_ - y0_);
     levels_.push_back(std::move(values));

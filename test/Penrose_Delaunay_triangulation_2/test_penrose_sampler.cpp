@@ -426,6 +426,26 @@ TEST(Raster, InterpolatesBetweenPixelCentres)
   EXPECT_NEAR(d.upper_bound(Epick::Iso_rectangle_2(-1e300, -1e300, 1e300, 1e300)), *std::max_element(v.begin(), v.end()), 1e-9);
 }
 
+TEST(Raster, RejectsBadRasters)
+{
+  typedef CGAL::Raster_density_2<Epick> Raster;
+  const std::vector<double> six(6, 1.);
+  EXPECT_NO_THROW(Raster(3, 2, six, unit_square));
+  EXPECT_THROW(Raster(0, 2, {}, unit_square), std::invalid_argument);
+  EXPECT_THROW(Raster(2, 2, six, unit_square), std::invalid_argument);
+  // sizes whose product wraps around to the number of values
+  const std::size_t half = std::size_t(1) << (std::numeric_limits<std::size_t>::digits / 2);
+  EXPECT_THROW(Raster(half, half * 6, six, unit_square), std::invalid_argument);
+  for(double bad : {-1., std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
+    std::vector<double> v = six;
+    v[4] = bad;
+    EXPECT_THROW(Raster(3, 2, v, unit_square), std::invalid_argument) << bad;
+  }
+  EXPECT_THROW(Raster(3, 2, six, Epick::Iso_rectangle_2(0, 0, 1, 0)), std::invalid_argument);
+  EXPECT_THROW(Raster(3, 2, six, Epick::Iso_rectangle_2(0, 0, std::numeric_limits<double>::infinity(), 1)),
+               std::invalid_argument);
+}
+
 // The max pyramid's bound, over boxes from a fraction of a pixel to more
 // than the region, against the brute-force maximum of the pixels whose
 // interpolation reaches into the box and against the density inside it.
