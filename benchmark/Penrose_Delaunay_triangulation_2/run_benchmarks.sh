@@ -23,14 +23,7 @@ while [ $# -gt 0 ]; do
 done
 mkdir -p "$out"
 
-need=()
-for pkg in build-essential cmake pkg-config libcgal-dev libboost-dev libgmp-dev libmpfr-dev libstb-dev gnuplot-nox; do
-  dpkg -s "$pkg" >/dev/null 2>&1 || need+=("$pkg")
-done
-if [ ${#need[@]} -gt 0 ]; then
-  export DEBIAN_FRONTEND=noninteractive
-  apt-get update -qq && apt-get install -y -qq --no-install-recommends "${need[@]}"
-fi
+bash .ci/install-dependencies gnuplot-nox
 
 build=build-benchmarks
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DPENROSE_BUILD_BENCHMARKS=ON -DBUILD_TESTING=OFF \
