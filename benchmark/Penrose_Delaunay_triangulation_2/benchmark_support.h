@@ -47,6 +47,13 @@ inline double peak_resident_bytes()
   return double(u.ru_maxrss) * 1024.;
 }
 
+// The sampler's parameters for about n points, up to sizes beyond its
+// default maximum.
+inline auto sampling_parameters(double n)
+{
+  return CGAL::parameters::number_of_output_points(std::size_t(n)).maximum_number(std::size_t(1e9));
+}
+
 // A sampler of about n points on the unit square, for the constant density
 // or the ramp of the paper's Figure 7 (`input`: "constant" or "ramp").
 template <class K>
@@ -54,7 +61,7 @@ CGAL::Penrose_importance_sampler<K> unit_square_sampler(const std::string& input
 {
   typedef typename K::Point_2 Point;
   const typename K::Iso_rectangle_2 unit(0, 0, 1, 1);
-  auto np = CGAL::parameters::number_of_output_points(std::size_t(n)).maximum_number(std::size_t(1e9));
+  const auto np = sampling_parameters(n);
   if(input == "constant") return CGAL::Penrose_importance_sampler<K>(unit, [](const Point&) { return 1.; }, np);
   if(input == "ramp") return CGAL::Penrose_importance_sampler<K>(unit, [](const Point& p) { return p.x(); }, np);
   throw std::invalid_argument("unknown input " + input);

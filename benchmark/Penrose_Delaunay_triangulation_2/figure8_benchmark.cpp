@@ -62,7 +62,7 @@ double terrain_density(const Point& p)
 Sampler make_sampler(const std::string& input, double n, const std::string& image)
 {
   const K::Iso_rectangle_2 unit(0, 0, 1, 1);
-  auto np = CGAL::parameters::number_of_output_points(std::size_t(n)).maximum_number(std::size_t(1e9));
+  const auto np = benchmark_support::sampling_parameters(n);
   if(input == "terrain") return Sampler(unit, terrain_density, np);
   if(input == "image") {
     CGAL::IO::Luminance_image img = CGAL::IO::read_luminance_image(image);

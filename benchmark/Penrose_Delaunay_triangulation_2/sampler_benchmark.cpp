@@ -37,8 +37,7 @@ static std::vector<K::Point_2> sample(double n, double* seconds = nullptr, bool 
   std::vector<K::Point_2> p;
   const double t0 = now();
   Sampler s(unit, [](const K::Point_2&) { return 1.; },
-            CGAL::parameters::use_correction_vectors(correct)
-              .number_of_output_points(std::size_t(n)).maximum_number(std::size_t(1e9)));
+            CGAL::parameters::use_correction_vectors(correct, benchmark_support::sampling_parameters(n)));
   p.reserve(std::size_t(s.expected_number_of_points() * 1.02));
   s(std::back_inserter(p));
   if(seconds) *seconds = now() - t0;

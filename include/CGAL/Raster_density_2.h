@@ -99,9 +99,8 @@ public:
     const long i1 = clamp_index(floor_index(limited(pixel_u(bx1) - 0.5, w_)) + 1, w_);
     const long j0 = clamp_index(floor_index(limited(pixel_v(by1) - 0.5, h_)), h_);
     const long j1 = clamp_index(floor_index(limited(pixel_v(by0) - 0.5, h_)) + 1, h_);
-    // The finest level at which the range spans at most two cells each way:
-    // not below the one where its width is halved to one cell.
-    std::size_t k = (std::min)(levels_.size() - 1, (std::max)(halvings_to_one(i1 - i0), halvings_to_one(j1 - j0)));
+    // the finest level at which the range spans at most two cells each way
+    std::size_t k = 0;
     while(k + 1 < levels_.size() && ((i1 >> k) - (i0 >> k) > 1 || (j1 >> k) - (j0 >> k) > 1)) ++k;
     // the two cells each way, the same one twice where the range spans one
     const std::vector<double>& level = levels_[k];
@@ -141,13 +140,6 @@ private:
   {
     const long i = long(u);
     return double(i) > u ? i - 1 : i;
-  }
-  // the least k with d >> k <= 1
-  static std::size_t halvings_to_one(long d)
-  {
-    std::size_t k = 0;
-    for(unsigned long r = static_cast<unsigned long>(d) >> 1; r != 0; r >>= 1) ++k;
-    return k;
   }
   double at(long i, long j) const { return levels_[0][std::size_t(clamp_index(j, h_)) * w_ + std::size_t(clamp_index(i, w_))]; }
   std::size_t level_width(std::size_t k) const { return ((w_ - 1) >> k) + 1; }
