@@ -328,7 +328,7 @@ private:
     };
     auto fh = [&m, &side](std::size_t f) {
       Face_handle h;
-      if constexpr(in_place) std::memcpy(&h, m.faces[f].v.data(), sizeof h);
+      if constexpr(in_place) std::memcpy(static_cast<void*>(&h), m.faces[f].v.data(), sizeof h);
       else h = side[f];
       return h;
     };

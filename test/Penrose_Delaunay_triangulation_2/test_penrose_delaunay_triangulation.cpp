@@ -206,7 +206,9 @@ TEST(Triangulation, FewPointsHaveCgalsDimension)
                     CGAL::parameters::density_control_factor(scale));
     const std::pair<std::size_t, int> made = expect_same_as_cgal(s, "scale " + std::to_string(scale));
     seen.insert(made.first);
-    if(made.first < 3) EXPECT_EQ(made.second, int(made.first) - 1);
+    if(made.first < 3) {
+      EXPECT_EQ(made.second, int(made.first) - 1);
+    }
   }
   EXPECT_TRUE(seen.count(0) && seen.count(1) && seen.count(2));
   // a density that is zero everywhere

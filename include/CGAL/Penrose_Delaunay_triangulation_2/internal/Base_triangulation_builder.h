@@ -279,7 +279,6 @@ private:
   int slot_across(Index g, const Tile& t, int e) const
   {
     const int ge = m_.edge_index(g, t.corners[(e + 1) % 3], t.corners[e]);
-    CGAL_assertion(ge >= 0);
     return slot((ge + 1) % 3);
   }
 
@@ -362,7 +361,6 @@ private:
     }
     // a leaf, or part of one: split it at x
     const int ge = m_.edge_index(g, b, a);
-    CGAL_assertion(ge >= 0);
     const Index h = m_.split_face_on_edge(g, ge, x);  // g keeps b-x, h takes x-a
     m_.link(seg[0], seg_edge[0], h, 0);
     m_.link(seg[1], seg_edge[1], g, 0);

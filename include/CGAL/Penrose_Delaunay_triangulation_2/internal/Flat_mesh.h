@@ -13,6 +13,7 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/assertions.h>
+#include <CGAL/use.h>
 
 #include <array>
 #include <cstdint>
@@ -125,13 +126,14 @@ public:
     return F.n[0] == g ? 0 : (F.n[1] == g ? 1 : 2);
   }
 
-  // The edge of face f from vertex a to vertex b, as the index of the opposite vertex.
+  // The edge of face f from vertex a to vertex b, which must be one of its
+  // edges, as the index of the opposite vertex.
   int edge_index(Index f, Index a, Index b) const
   {
-    const Face& F = faces[f];
-    for(int i = 0; i < 3; ++i)
-      if(F.v[ccw(i)] == a && F.v[cw(i)] == b) return i;
-    return -1;
+    const int i = cw(index_of_vertex(f, a));
+    CGAL_assertion(faces[f].v[ccw(i)] == a && faces[f].v[cw(i)] == b);
+    CGAL_USE(b);
+    return i;
   }
 
   Orientation orientation(Index a, Index b, Index c) const
