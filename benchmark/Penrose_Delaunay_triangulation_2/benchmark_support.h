@@ -54,6 +54,9 @@ inline auto sampling_parameters(double n)
   return CGAL::parameters::number_of_output_points(std::size_t(n)).maximum_number(std::size_t(1e9));
 }
 
+// Whether unit_square_sampler() knows `input`.
+inline bool is_unit_square_input(const std::string& input) { return input == "constant" || input == "ramp"; }
+
 // A sampler of about n points on the unit square, for the constant density
 // or the ramp of the paper's Figure 7 (`input`: "constant" or "ramp").
 template <class K>
@@ -62,9 +65,9 @@ CGAL::Penrose_importance_sampler<K> unit_square_sampler(const std::string& input
   typedef typename K::Point_2 Point;
   const typename K::Iso_rectangle_2 unit(0, 0, 1, 1);
   const auto np = sampling_parameters(n);
+  if(!is_unit_square_input(input)) throw std::invalid_argument("unknown input " + input);
   if(input == "constant") return CGAL::Penrose_importance_sampler<K>(unit, [](const Point&) { return 1.; }, np);
-  if(input == "ramp") return CGAL::Penrose_importance_sampler<K>(unit, [](const Point& p) { return p.x(); }, np);
-  throw std::invalid_argument("unknown input " + input);
+  return CGAL::Penrose_importance_sampler<K>(unit, [](const Point& p) { return p.x(); }, np);
 }
 
 } // namespace benchmark_support

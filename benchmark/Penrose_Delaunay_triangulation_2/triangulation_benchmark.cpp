@@ -37,8 +37,6 @@ typedef benchmark_support::Hierarchy<K> Hierarchy;
 using benchmark_support::median;
 using benchmark_support::now;
 
-static bool is_input(const std::string& input) { return input == "constant" || input == "ramp"; }
-
 // a number of points: at least 1, at most the sampler's maximum_number below
 static bool is_size(const std::string& n)
 {
@@ -145,10 +143,10 @@ int main(int argc, char** argv)
   const std::string mode = argc > 1 ? argv[1] : "speed";
   auto arg = [&](int i, const char* otherwise) { return std::string(argc > i ? argv[i] : otherwise); };
   const bool valid =
-    (mode == "speed" && is_size(arg(2, "1e6")) && is_input(arg(3, "constant")) && std::atoi(arg(4, "5").c_str()) >= 1) ||
+    (mode == "speed" && is_size(arg(2, "1e6")) && benchmark_support::is_unit_square_input(arg(3, "constant")) && std::atoi(arg(4, "5").c_str()) >= 1) ||
     (mode == "memory" && (arg(2, "penrose") == "penrose" || arg(2, "penrose") == "cgal") && is_size(arg(3, "1e6"))) ||
-    (mode == "scaling" && is_input(arg(2, "constant"))) ||
-    (mode == "once" && is_size(arg(2, "1e6")) && is_input(arg(3, "constant")));
+    (mode == "scaling" && benchmark_support::is_unit_square_input(arg(2, "constant"))) ||
+    (mode == "once" && is_size(arg(2, "1e6")) && benchmark_support::is_unit_square_input(arg(3, "constant")));
   if(!valid) {
     std::cerr << "usage: triangulation_benchmark speed [N] [constant|ramp] [runs] | memory penrose|cgal [N] | "
                  "scaling [constant|ramp] | once [N] [constant|ramp]\n";
