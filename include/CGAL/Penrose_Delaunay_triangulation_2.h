@@ -230,6 +230,13 @@ public:
     return build(sampler, lift, No_vertex_visitor());
   }
 
+  /// Exchanges the triangulations and their construction statistics.
+  void swap(Penrose_Delaunay_triangulation_2& other)
+  {
+    Base::swap(other);
+    std::swap(stats_, other.stats_);
+  }
+
   /// \name Statistics of the construction
   /// @{
   const Construction_statistics& construction_statistics() const { return stats_; }

@@ -16,8 +16,10 @@
 
 #include <cstdint>
 #include <functional>
+#include <iomanip>
 #include <limits>
 #include <memory>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -165,9 +167,12 @@ public:
     }
     density_scale_ = scale;
     expected_ = scale * integral_;
-    if(expected_ > static_cast<double>(maximum))
-      throw std::length_error("Penrose_importance_sampler: about " + std::to_string(expected_)
-                              + " points expected, more than maximum_number (" + std::to_string(maximum) + ")");
+    if(expected_ > static_cast<double>(maximum)) {
+      std::ostringstream msg;
+      msg << "Penrose_importance_sampler: about " << std::setprecision(3) << expected_
+          << " points expected, more than maximum_number (" << maximum << ")";
+      throw std::length_error(msg.str());
+    }
 
     context_ = std::make_shared<internal::Penrose::Sampling_context>(
       x0, y0, x1, y1, density_xy, bound_xy, scale,

@@ -255,6 +255,26 @@ TEST(Triangulation, StaysValidUnderEdits)
   EXPECT_GT(voronoi_edges, 0u);
 }
 
+TEST(Triangulation, CopiesAndSwapsCarryTheirStatistics)
+{
+  typedef CGAL::Penrose_Delaunay_triangulation_2<Epick> Pdt;
+  const Sampler s(unit_square, [](const Point& p) { return 1. + p.x(); },
+                  CGAL::parameters::number_of_output_points(3000));
+  const Pdt built(s);
+  ASSERT_GT(built.number_of_flips(), 0u);
+  Pdt copy(built), other;
+  EXPECT_TRUE(copy.is_valid());
+  EXPECT_TRUE(edge_set(copy, xy_of) == edge_set(built, xy_of));
+  EXPECT_EQ(copy.number_of_flips(), built.number_of_flips());
+  other.swap(copy);
+  EXPECT_EQ(copy.number_of_vertices(), 0u);
+  EXPECT_EQ(copy.number_of_flips(), 0u);
+  EXPECT_TRUE(other.is_valid());
+  EXPECT_TRUE(edge_set(other, xy_of) == edge_set(built, xy_of));
+  EXPECT_EQ(other.number_of_flips(), built.number_of_flips());
+  EXPECT_EQ(other.construction_statistics().base_vertices, built.construction_statistics().base_vertices);
+}
+
 TEST(Triangulation, CallbackReportsAdvancementAndStops)
 {
   const Sampler s(unit_square, [](const Point& p) { return 1. + p.x(); },
