@@ -71,7 +71,7 @@ public:
     m_.points.reserve(n); m_.vertex_face.reserve(n);
     importance_.reserve(n); target_.reserve(n);
     if(record_births_) birth_.reserve(n);
-    m_.faces.reserve(2 * n); m_.face_alive.reserve(2 * n);
+    m_.faces.reserve(2 * n); m_.face_alive.reserve(2 * n); face_tile_.reserve(2 * n);
     for(int i = 0; i < 3; ++i) add_vertex(c_.root_x(i), c_.root_y(i), c_.importance(c_.root_x(i), c_.root_y(i)));
     const Tile root = {0, 0, FAT_F, 15, 0, {{0, 1, 2}}, m_.create_face(0, 1, 2)};
     double rx[3], ry[3];
@@ -86,12 +86,12 @@ public:
       // the frontier's faces all exist before the level starts
       face_tile_.resize(m_.faces.size(), null);
       for(std::size_t k = 0; k < frontier_.size(); ++k) face_tile_[frontier_[k].face] = Index(k);
-      std::vector<Work>().swap(work_);  // released before its successor is made
+      decltype(work_)().swap(work_);  // released before its successor is made
       work_.resize(frontier_.size());
       // a fresh block for the children (at most 3 per tile, so it never
       // moves; untouched pages cost nothing): the previous level's block is
       // released rather than held through the level
-      std::vector<Tile>().swap(next_);
+      decltype(next_)().swap(next_);
       next_.reserve(3 * frontier_.size());
       const double done = double(tiles_done), half = 0.5 * double(frontier_.size());
       Index next_child = 0;
@@ -390,12 +390,12 @@ private:
   Flat_mesh& m_;
   const bool record_births_;
   Large_vector<Sample_birth> birth_;  // with record_births_ only
-  std::vector<Tile> frontier_, next_;
-  std::vector<Work> work_;           // for the tiles of frontier_
+  Large_vector<Tile> frontier_, next_;
+  Large_vector<Work> work_;          // for the tiles of frontier_
   Large_vector<double> importance_;   // per vertex, at the nearest point of the region
   Large_vector<std::pair<double, double>> target_;  // see take_targets()
   Placed_sample scratch_;
-  std::vector<Index> face_tile_;     // frontier tile of an intact face, or null
+  Large_vector<Index> face_tile_;    // frontier tile of an intact face, or null
 };
 
 } // namespace Penrose
