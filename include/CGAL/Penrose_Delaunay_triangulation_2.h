@@ -6,6 +6,7 @@
 
 #include <CGAL/Penrose_importance_sampler.h>
 #include <CGAL/Penrose_Delaunay_triangulation_2/internal/Base_triangulation_builder.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Construction_size.h>
 #include <CGAL/Penrose_Delaunay_triangulation_2/internal/Flat_mesh.h>
 #include <CGAL/Penrose_Delaunay_triangulation_2/internal/Flat_mesh_delaunay.h>
 #include <CGAL/Penrose_Delaunay_triangulation_2/internal/Flat_mesh_editing.h>
@@ -64,6 +65,11 @@ exact.
 
 It is a `Delaunay_triangulation_2<Gt, Tds>`: every operation of that class
 works on it after construction.
+
+A construction that would not fit in the machine's memory (its peak is
+about 200 bytes per point with the default TDS), or that has more than
+about \f$1.7 \times 10^9\f$ points, is refused before anything is allocated:
+the constructors and `build()` throw `std::length_error`.
 
 \tparam Gt a model of `DelaunayTriangulationTraits_2` with exact predicates
         (for example `Exact_predicates_inexact_constructions_kernel`,
@@ -154,6 +160,9 @@ public:
       construction stops and the triangulation is left empty.
 
   \return `false` if `callback` stopped the construction, `true` otherwise.
+  \throws std::length_error, leaving the triangulation as it was, if the
+  construction would need more memory than the machine has, or more than
+  about \f$1.7 \times 10^9\f$ points.
   */
   template <class SamplerTraits, class Lift, class OnVertex,
             class NamedParameters = parameters::Default_named_parameters>
@@ -170,6 +179,8 @@ public:
     };
     // the advancements are the shares of the time that the steps end at (10^6 points)
     auto proceed = [&](double advancement) { return !callback || callback(advancement); };
+    internal::Penrose::check_construction_size(sampler.expected_number_of_points(), peak_bytes_per_point(),
+                                               internal::Penrose::physical_memory_bytes());
     const internal::Penrose::Sampling_context& context = sampler.context();
     this->clear();
     stats_ = Construction_statistics();
@@ -245,6 +256,16 @@ public:
   /// @}
 
 private:
+  // The peak of a construction: the flat mesh's faces and links (about 80
+  // bytes per point at the peak, which is while the TDS is written) and the
+  // TDS itself, with two faces per vertex.
+  static double peak_bytes_per_point()
+  {
+    typedef typename Triangulation_data_structure::Vertex Vertex;
+    typedef typename Triangulation_data_structure::Face Face;
+    return 80. + double(sizeof(Vertex)) + 2. * double(sizeof(Face));
+  }
+
   struct No_vertex_visitor
   {
     template <class V, class S> void operator()(V, const S&) const {}

@@ -196,6 +196,33 @@ TEST(Triangulation, WithoutCorrectionCocircularPointsMatchCgal)
                         "no correction " + std::to_string(n));
 }
 
+TEST(Triangulation, RefusesWhatCannotFit)
+{
+  using CGAL::internal::Penrose::check_construction_size;
+  const double gib = double(1 << 30);
+  EXPECT_THROW(check_construction_size(1e7, 200., 1. * gib), std::length_error);
+  EXPECT_NO_THROW(check_construction_size(1e7, 200., 4. * gib));
+  EXPECT_NO_THROW(check_construction_size(1e7, 200., 0.));  // memory unknown
+  EXPECT_THROW(check_construction_size(2e9, 200., 0.), std::length_error);  // 32-bit indices
+  EXPECT_NO_THROW(check_construction_size(1.5e9, 200., 0.));
+
+  // 10^10 points: refused before any allocation, the triangulation untouched
+  CGAL::Penrose_Delaunay_triangulation_2<Epick> pdt(
+    Sampler(unit_square, [](const Point&) { return 1.; }, CGAL::parameters::number_of_output_points(500)));
+  const std::set<Edge_key> before = edge_set(pdt, xy_of);
+  const Sampler huge(unit_square, [](const Point&) { return 1.; },
+                     CGAL::parameters::number_of_output_points(std::size_t(1e10)).maximum_number(std::size_t(1e11)));
+  try {
+    pdt.build(huge, [](double x, double y) { return Point(x, y); });
+    ADD_FAILURE() << "10^10 points were not refused";
+  } catch(const std::length_error& e) {
+    EXPECT_NE(std::string(e.what()).find("about 1e+10 points are more than its 32-bit indices allow"), std::string::npos)
+      << e.what();
+  }
+  EXPECT_TRUE(pdt.is_valid());
+  EXPECT_TRUE(edge_set(pdt, xy_of) == before);
+}
+
 TEST(Triangulation, FewPointsHaveCgalsDimension)
 {
   // tiny densities: 0, 1, 2, ... points
