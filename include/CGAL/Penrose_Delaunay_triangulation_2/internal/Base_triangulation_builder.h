@@ -61,13 +61,17 @@ public:
     return s;
   }
 
+  // The vertices that build() makes room for: the count varies around the
+  // expectation by about a percent. Twice as many faces.
+  static std::size_t vertex_capacity(double expected_points) { return std::size_t(1.25 * expected_points) + 64; }
+
   // `expected_points` sizes the arrays once: growing them level after level
   // would fault fresh pages in at every reallocation. `progress(f)`, if set,
   // is called now and then with an estimate f in [0, 1) of the work done;
   // the build stops, returning false, as soon as it returns false.
   bool build(double expected_points, const std::function<bool(double)>& progress)
   {
-    const std::size_t n = std::size_t(1.25 * expected_points) + 64;
+    const std::size_t n = vertex_capacity(expected_points);
     m_.points.reserve(n); m_.vertex_face.reserve(n);
     importance_.reserve(n); target_.reserve(n);
     if(record_births_) birth_.reserve(n);

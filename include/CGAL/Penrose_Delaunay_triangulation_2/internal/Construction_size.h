@@ -9,6 +9,7 @@
 #ifndef CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_CONSTRUCTION_SIZE_H
 #define CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_CONSTRUCTION_SIZE_H
 
+#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Base_triangulation_builder.h>
 #include <CGAL/Penrose_Delaunay_triangulation_2/internal/Flat_mesh.h>
 
 #include <iomanip>
@@ -34,14 +35,15 @@ inline double physical_memory_bytes()
 }
 
 // Throws std::length_error if a construction of about `expected_points`
-// points would overflow the flat mesh's indices (the builder reserves 2.5
-// faces per expected point), or if its peak, `bytes_per_point` each, would
-// exceed `memory` bytes (0: unknown, not checked).
+// points would overflow the flat mesh's indices (the builder makes room for
+// twice its vertex capacity in faces), or if its peak, `bytes_per_point`
+// each, would exceed `memory` bytes (0: unknown, not checked).
 inline void check_construction_size(double expected_points, double bytes_per_point, double memory)
 {
   std::ostringstream msg;
   msg << "Penrose_Delaunay_triangulation_2: about " << std::setprecision(3) << expected_points << " points ";
-  if(2.5 * expected_points + 256. >= double(Flat_mesh::null)) {
+  if(expected_points >= 0.5 * double(Flat_mesh::null) ||
+     2 * Base_triangulation_builder::vertex_capacity(expected_points) >= Flat_mesh::null) {
     msg << "are more than its 32-bit indices allow (about 1.7e+09)";
     throw std::length_error(msg.str());
   }
