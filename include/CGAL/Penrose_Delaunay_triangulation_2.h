@@ -163,6 +163,9 @@ public:
   \throws std::length_error, leaving the triangulation as it was, if the
   construction would need more memory than the machine has, or more than
   about \f$1.7 \times 10^9\f$ points.
+  \throws what sampling throws (a bad density, tiles too fine for the
+  coordinates: see `Penrose_importance_sampler`), leaving the triangulation
+  empty.
   */
   template <class SamplerTraits, class Lift, class OnVertex,
             class NamedParameters = parameters::Default_named_parameters>

@@ -122,6 +122,15 @@ public:
           finite, or if the density is negative, NaN or infinite where it is
           evaluated (the message names the point and the value).
   \throws std::length_error if more than `maximum_number` points are expected.
+  \throws std::range_error if the region lies so far from the origin, for its
+          size, that doubles cannot place even the first tiles. Sampling, the
+          tile tree and the triangulation throw it too when the density needs
+          tiles finer than doubles resolve at the region's coordinates,
+          where the samples would be closer than about 100 to 200 units in
+          the last place: 5000 points in a unit square are refused at
+          (10^12, 10^12), where doubles are 1.2 x 10^-4 apart, and sampled
+          at (10^11, 10^11). Moving the region nearer to the origin mends
+          that.
   */
   template <class Density, class NamedParameters = parameters::Default_named_parameters>
   Penrose_importance_sampler(const Iso_rectangle_2& region, const Density& density,
@@ -157,6 +166,9 @@ public:
     // sampler, before anything large is allocated.
     internal::Penrose::Sampling_context probe(x0, y0, x1, y1, density_xy, nullptr, 1., nullptr);
     integral_ = integrate(probe, x0, y0, x1, y1);
+    if(!(integral_ < std::numeric_limits<double>::infinity()))
+      throw std::invalid_argument("Penrose_importance_sampler: the integral of the density over the region overflows "
+                                  "the doubles; scale the density down");
 
     double scale = factor;
     if(!is_default_parameter<NamedParameters, internal_np::number_of_output_points_t>::value) {
@@ -164,6 +176,9 @@ public:
       if(n > 0. && !(integral_ > 0.))
         throw std::invalid_argument("Penrose_importance_sampler: a number of points was asked for, but the density is zero over the region");
       scale *= integral_ > 0. ? n / integral_ : 0.;
+      if(!(scale < std::numeric_limits<double>::infinity()))
+        throw std::invalid_argument("Penrose_importance_sampler: the density is too small over the region to be scaled "
+                                    "to the number of points asked for; scale the density up");
     }
     density_scale_ = scale;
     expected_ = scale * integral_;

@@ -25,6 +25,7 @@
 #include <cstdint>
 #include <functional>
 #include <map>
+#include <stdexcept>
 #include <string>
 #include <set>
 #include <utility>
@@ -185,6 +186,16 @@ TEST(Triangulation, UnusualRegionsAndDensitiesMatchCgal)
                                 return 1. + 1e4 * std::exp(-r2 / 1e-5); },
                               CGAL::parameters::number_of_output_points(8000)), "spike");
   EXPECT_THROW(Sampler(Epick::Iso_rectangle_2(-1e160, -1e160, 1e160, 1e160), one), std::invalid_argument);
+  expect_same_as_cgal(Sampler(Epick::Iso_rectangle_2(1e11, 1e11, 1e11 + 1, 1e11 + 1), one,
+                              CGAL::parameters::number_of_output_points(50000)), "finest resolved at 10^11");
+  // tiles too fine for the coordinates (which crashed the construction):
+  // refused, the triangulation left valid
+  CGAL::Penrose_Delaunay_triangulation_2<Epick> pdt(Sampler(unit_square, one, CGAL::parameters::number_of_output_points(500)));
+  EXPECT_THROW(pdt.build(Sampler(Epick::Iso_rectangle_2(1e12, 1e12, 1e12 + 1, 1e12 + 1), one,
+                                 CGAL::parameters::number_of_output_points(5000)),
+                         [](double x, double y) { return Point(x, y); }),
+               std::range_error);
+  EXPECT_TRUE(pdt.is_valid());
 }
 
 TEST(Triangulation, WithoutCorrectionCocircularPointsMatchCgal)

@@ -339,6 +339,12 @@ TEST(Sampler, RejectsBadRegionsAndParameters)
   EXPECT_THROW(Sampler(unit_square, [](const Point&) { return 0.; }, CGAL::parameters::number_of_output_points(100)),
                std::invalid_argument);
   EXPECT_THROW(Sampler(unit_square, one, CGAL::parameters::density_control_factor(-1.)), std::invalid_argument);
+  // scales out of the doubles' range (the first gave NaN points expected and
+  // a meaningless error from std::vector, the second infinitely many points)
+  EXPECT_THROW(Sampler(unit_square, [](const Point&) { return 1.7e308; }, CGAL::parameters::number_of_output_points(100)),
+               std::invalid_argument);
+  EXPECT_THROW(Sampler(unit_square, [](const Point&) { return 1e-310; }, CGAL::parameters::number_of_output_points(100)),
+               std::invalid_argument);
   // so many points that they would exhaust memory: refused before anything is allocated
   EXPECT_THROW(Sampler(unit_square, [](const Point&) { return 1e300; }), std::length_error);
   // a density that needs more than the 30 levels of the tree (the count guard raised)
@@ -349,6 +355,31 @@ TEST(Sampler, RejectsBadRegionsAndParameters)
     s(std::back_inserter(p));
   });
   EXPECT_NE(m.find("levels of the tile tree"), std::string::npos) << m;
+}
+
+TEST(Sampler, RefusesTilesFinerThanItsCoordinatesResolve)
+{
+  auto one = [](const Point&) { return 1.; };
+  auto far_square = [](double corner) { return Epick::Iso_rectangle_2(corner, corner, corner + 1, corner + 1); };
+  auto sample = [&](double corner, std::size_t n) {
+    std::vector<Point> p;
+    Sampler(far_square(corner), one, CGAL::parameters::number_of_output_points(n))(std::back_inserter(p));
+    return p;
+  };
+  // doubles are 0.125 apart at 10^15: not even the first tiles can be placed
+  EXPECT_THROW(Sampler(far_square(1e15), one), std::range_error);
+  // 0.0001 apart at 10^12: 5000 points (0.014 apart) need tiles of 0.006, too fine
+  try {
+    sample(1e12, 5000);
+    ADD_FAILURE() << "5000 points at 10^12 were not refused";
+  } catch(const std::range_error& e) {
+    EXPECT_NE(std::string(e.what()).find("move the region nearer to the origin"), std::string::npos) << e.what();
+  }
+  // at 10^11, where doubles are eight times closer, they are resolved, all distinct
+  std::vector<Point> p = sample(1e11, 5000);
+  EXPECT_GT(p.size(), 4900u);
+  std::sort(p.begin(), p.end());
+  EXPECT_TRUE(std::adjacent_find(p.begin(), p.end()) == p.end());
 }
 
 TEST(Sampler, MaximumNumberGuardsMemory)

@@ -85,6 +85,7 @@ public:
     root_y_[2] = root_y_[0] + phi * root_scale_ * u.y[17];
     // A sample never moves more than this many scales of the tile it is born in.
     margin_factor_ = (std::max)(1., table_ == nullptr ? 0. : table_->max_length());
+    set_finest_level();
     max_importance_ = fibonacci().level_importance[max_level + 1];
     structural_bits_ = table_ ? table_->structural_bits : default_structural_bits;
     structural_index_.resize(std::size_t(1) << structural_bits_);
@@ -159,9 +160,7 @@ public:
       }
     }
     if(!(imax >= least)) return false;
-    if(level >= max_level)
-      throw std::length_error("Penrose_importance_sampler: the density needs more than "
-                              + std::to_string(max_level) + " subdivision levels");
+    if(level >= finest_level_) throw_too_fine(level + 1);
     return true;
   }
 
@@ -225,6 +224,39 @@ private:
     throw std::invalid_argument(msg.str());
   }
 
+  // The finest level that doubles resolve at the coordinates of the tile
+  // tree. A vertex of level l is interpolated from coarser ones, one
+  // rounding per level, so it lies within l + 2 ulps of the largest
+  // coordinate from its exact place, while the triangles of the base
+  // triangulation down to level l are at least sin 36 scale(l) high (0.588
+  // scale(l), measured on constant, ramp, spike and step densities). Their
+  // orientations are certain while two such errors stay below that height,
+  // that is while scale(l) >= 3.4 (l + 2) ulps: 4 are asked.
+  void set_finest_level()
+  {
+    largest_coordinate_ = (std::max)({std::abs(xmin_), std::abs(xmax_), std::abs(ymin_), std::abs(ymax_)});
+    for(int i = 0; i < 3; ++i)
+      largest_coordinate_ = (std::max)({largest_coordinate_, std::abs(root_x_[i]), std::abs(root_y_[i])});
+    const double ulp = std::nextafter(largest_coordinate_, std::numeric_limits<double>::infinity()) - largest_coordinate_;
+    auto resolved = [&](int level) { return scale_[level] >= 4. * (level + 2) * ulp; };
+    finest_level_ = 0;
+    while(finest_level_ < max_level && resolved(finest_level_ + 1)) ++finest_level_;
+    if(finest_level_ < uniform_levels) throw_too_fine(finest_level_ + 1);
+  }
+
+  [[noreturn]] void throw_too_fine(int level) const
+  {
+    if(level > max_level)
+      throw std::length_error("Penrose_importance_sampler: the density needs more than "
+                              + std::to_string(max_level) + " subdivision levels");
+    std::ostringstream msg;
+    msg.precision(3);
+    msg << "Penrose_importance_sampler: the tiles of level " << level << " (" << scale_[level]
+        << " across) are too fine for doubles to place at coordinates as large as " << largest_coordinate_
+        << "; move the region nearer to the origin, or ask for fewer points";
+    throw std::range_error(msg.str());
+  }
+
   double clamp_x(double x) const { return (std::min)((std::max)(x, xmin_), xmax_); }
   double clamp_y(double y) const { return (std::min)((std::max)(y, ymin_), ymax_); }
 
@@ -235,6 +267,8 @@ private:
   double root_scale_;
   double importance_per_density_;
   double margin_factor_;
+  double largest_coordinate_;  // of the region and the root tile
+  int finest_level_;            // see set_finest_level()
   double max_importance_;  // beyond it the importance needs more than max_level levels
   int structural_bits_;
   Importance_bins importance_bins_;
