@@ -89,3 +89,9 @@ run_mesh(--density ramp --points 100 --out-mesh ${WORK}/mesh.stl)
 if(NOT rc EQUAL 1 OR NOT err MATCHES "mesh.stl: unknown mesh format")
   message(FATAL_ERROR "--out-mesh mesh.stl: got ${rc}: ${err}")
 endif()
+
+# A count beyond std::size_t is refused, not wrapped around (1e30 gave 0 points).
+run_mesh(--density constant --points 1e30)
+if(NOT rc EQUAL 2 OR NOT err MATCHES "--points must be at most")
+  message(FATAL_ERROR "--points 1e30: got ${rc}: ${err}")
+endif()
