@@ -283,6 +283,8 @@ Density make_density(const Options& o, Input& in, const K::Iso_rectangle_2& regi
       return std::exp(-r2 / (2 * s * s)) + 0.05;
     };
   } else usage_error("unknown density '" + o.density + "'");
+  if(in.density.values.empty() && o.gamma != 1.)  // a raster has it already
+    d.value = [value = d.value, gamma = o.gamma](const Point& p) { return std::pow(value(p), gamma); };
   return d;
 }
 

@@ -95,3 +95,15 @@ run_mesh(--density constant --points 1e30)
 if(NOT rc EQUAL 2 OR NOT err MATCHES "--points must be at most")
   message(FATAL_ERROR "--points 1e30: got ${rc}: ${err}")
 endif()
+
+# --gamma applies to the analytic densities too (it was ignored): the ramp
+# squared puts an eighth of its points left of x = 0.5, against a quarter.
+foreach(gamma 1 2)
+  run_mesh(--density ramp --points 4000 --gamma ${gamma} --out-points ${WORK}/ramp${gamma}.xy)
+  file(STRINGS ${WORK}/ramp${gamma}.xy left REGEX "^0\\.[0-4]")
+  list(LENGTH left left_${gamma})
+endforeach()
+math(EXPR limit "${left_1} * 3 / 4")
+if(NOT left_2 LESS limit OR left_1 LESS 800)
+  message(FATAL_ERROR "--gamma 2: ${left_2} points left of 0.5, against ${left_1} with --gamma 1")
+endif()
