@@ -126,7 +126,7 @@ public:
           size, that doubles cannot place even the first tiles. Sampling, the
           tile tree and the triangulation throw it too when the density needs
           tiles finer than doubles resolve at the region's coordinates,
-          where the samples would be closer than about 100 to 200 units in
+          where the samples would be closer than about 100 to 150 units in
           the last place: 5000 points in a unit square are refused at
           (10^12, 10^12), where doubles are 1.2 x 10^-4 apart, and sampled
           at (10^11, 10^11). Moving the region nearer to the origin mends
