@@ -177,7 +177,7 @@ Options parse(int argc, char** argv)
   if(have_points && have_scale) usage_error("give --points or --scale, not both");
   if(have_scale) o.points = 0.;
   if(have_points && !(o.points >= 1.)) usage_error("--points must be at least 1");
-  // beyond, the count does not fit a std::size_t (1e30 came out as 0 points)
+  // beyond, the count would not convert to a std::size_t
   if(have_points && !(o.points <= 1e18)) usage_error("--points must be at most 1e18");
   if(have_scale && !(o.scale > 0.)) usage_error("--scale must be positive");
   if(have_density && terrain) usage_error("give --density or --terrain, not both");

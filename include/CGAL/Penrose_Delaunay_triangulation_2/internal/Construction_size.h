@@ -40,18 +40,17 @@ inline double physical_memory_bytes()
 // each, would exceed `memory` bytes (0: unknown, not checked).
 inline void check_construction_size(double expected_points, double bytes_per_point, double memory)
 {
+  // the first test keeps vertex_capacity() from converting an out-of-range double
+  const bool too_many = expected_points >= 0.5 * double(Flat_mesh::null) ||
+                        2 * Base_triangulation_builder::vertex_capacity(expected_points) >= Flat_mesh::null;
+  const double bytes = expected_points * bytes_per_point;
+  if(!too_many && !(memory > 0. && bytes > memory)) return;
   std::ostringstream msg;
   msg << "Penrose_Delaunay_triangulation_2: about " << std::setprecision(3) << expected_points << " points ";
-  if(expected_points >= 0.5 * double(Flat_mesh::null) ||
-     2 * Base_triangulation_builder::vertex_capacity(expected_points) >= Flat_mesh::null) {
-    msg << "are more than its 32-bit indices allow (about 1.7e+09)";
-    throw std::length_error(msg.str());
-  }
-  if(memory > 0. && expected_points * bytes_per_point > memory) {
-    msg << "need about " << expected_points * bytes_per_point / double(1 << 30) << " GiB, more than the "
-        << memory / double(1 << 30) << " GiB of this machine";
-    throw std::length_error(msg.str());
-  }
+  if(too_many) msg << "are more than its 32-bit indices allow (about 1.7e+09)";
+  else msg << "need about " << bytes / double(1 << 30) << " GiB, more than the " << memory / double(1 << 30)
+           << " GiB of this machine";
+  throw std::length_error(msg.str());
 }
 
 } // namespace Penrose
