@@ -24,6 +24,7 @@
 #include <cmath>
 #include <cstdint>
 #include <functional>
+#include <iostream>
 #include <map>
 #include <stdexcept>
 #include <string>
@@ -156,6 +157,55 @@ TEST(Internals, HugePageAllocatorKeepsContentsAcrossItsThreshold)
   v.shrink_to_fit();
   for(std::uint64_t i = 0; i < 1000; ++i) wrong += v[i] != i * 0x9e3779b97f4a7c15u;
   EXPECT_EQ(wrong, 0u);
+}
+
+TEST(Internals, FastPredicatesNeverContradictEpick)
+{
+  // Near-degenerate configurations at every scale: four points rounded onto a
+  // circle, three onto a line, then nudged by a few ulps. The filters may
+  // leave a case undecided (ZERO), never decide it wrongly, and must decide
+  // the generic ones.
+  using namespace CGAL::internal::Penrose;
+  CGAL::Random rng(20261122);
+  const Epick::Orientation_2 orientation;
+  const Epick::Side_of_oriented_circle_2 side_of_oriented_circle;
+  auto nudge = [&rng](double v) {
+    for(int k = rng.get_int(-3, 4); k != 0; k += (k < 0 ? 1 : -1))
+      v = std::nextafter(v, k < 0 ? -HUGE_VAL : HUGE_VAL);
+    return v;
+  };
+  std::size_t wrong = 0, generic = 0, generic_decided = 0, degenerate_decided = 0;
+  for(int trial = 0; trial < 200000; ++trial) {
+    const double scale = std::ldexp(1., rng.get_int(-700, 700));
+    const double offset = (trial % 3 == 0) ? 0. : scale * std::ldexp(1., rng.get_int(0, 40));
+    const double cx = offset + scale * rng.get_double(-1, 1), cy = offset + scale * rng.get_double(-1, 1);
+    const double r = scale * rng.get_double(0.01, 1);
+    const bool degenerate = trial % 2 == 0;
+    std::array<Point, 4> q;
+    for(int i = 0; i < 4; ++i) {
+      const double a = rng.get_double(0, 6.283185307179586);
+      const double x = cx + r * std::cos(a), y = cy + r * std::sin(a);
+      q[i] = degenerate ? Point(nudge(x), nudge(y)) : Point(cx + scale * rng.get_double(-1, 1), cy + scale * rng.get_double(-1, 1));
+    }
+    if(degenerate && trial % 4 == 0)  // the third point on the line of the first two
+      q[2] = Point(nudge(q[0].x() + 0.375 * (q[1].x() - q[0].x())), nudge(q[0].y() + 0.375 * (q[1].y() - q[0].y())));
+    const CGAL::Sign o = filtered_orientation(q[0].x(), q[0].y(), q[1].x(), q[1].y(), q[2].x(), q[2].y());
+    wrong += o != CGAL::ZERO && o != orientation(q[0], q[1], q[2]);
+    if(orientation(q[0], q[1], q[2]) != CGAL::POSITIVE) std::swap(q[0], q[1]);
+    const CGAL::Sign s = filtered_in_circle(q[0].x(), q[0].y(), q[1].x(), q[1].y(), q[2].x(), q[2].y(), q[3].x(), q[3].y());
+    wrong += s != CGAL::ZERO && s != CGAL::Sign(side_of_oriented_circle(q[0], q[1], q[2], q[3]));
+    const bool in_range = std::abs(scale) > 1e-40 && std::abs(offset) + scale < 1e60;
+    if(!degenerate && in_range) {
+      ++generic;
+      generic_decided += (o != CGAL::ZERO) + (s != CGAL::ZERO);
+    }
+    if(degenerate) degenerate_decided += (s != CGAL::ZERO);
+  }
+  EXPECT_EQ(wrong, 0u);
+  EXPECT_GT(double(generic_decided), 0.99 * 2. * double(generic));
+  EXPECT_GT(generic, 10000u);
+  std::cout << "fast predicates: " << generic_decided << " of " << 2 * generic << " generic tests decided, "
+            << degenerate_decided << " of 100000 near-cocircular ones\n";
 }
 
 TEST(Triangulation, RandomSmoothDensitiesMatchCgal)

@@ -4,11 +4,12 @@
 // A triangle mesh in flat arrays, with CGAL's conventions (vertices counter-
 // clockwise; neighbour i opposite vertex i), on which the base triangulation
 // is built and edited before it is written once into a TDS. Orientation tests
-// are exact (filtered) on the double coordinates.
+// are exact on the double coordinates (Fast_predicates, then Epick).
 
 #ifndef CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_FLAT_MESH_H
 #define CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_FLAT_MESH_H
 
+#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Fast_predicates.h>
 #include <CGAL/Penrose_Delaunay_triangulation_2/internal/Huge_page_allocator.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -136,16 +137,14 @@ public:
     return i;
   }
 
-  Orientation orientation(Index a, Index b, Index c) const
-  {
-    typedef Exact_predicates_inexact_constructions_kernel K;
-    return K::Orientation_2()(points[a], points[b], points[c]);
-  }
+  Orientation orientation(Index a, Index b, Index c) const { return orientation(a, b, points[c]); }
 
   Orientation orientation(Index a, Index b, const Point& p) const
   {
-    typedef Exact_predicates_inexact_constructions_kernel K;
-    return K::Orientation_2()(points[a], points[b], p);
+    const Point& q = points[a];
+    const Point& r = points[b];
+    const Sign filtered = filtered_orientation(q.x(), q.y(), r.x(), r.y(), p.x(), p.y());
+    return filtered != ZERO ? filtered : Exact_predicates_inexact_constructions_kernel::Orientation_2()(q, r, p);
   }
 
   // Splits face f at vertex m, which lies on its edge i (opposite vertex i):

@@ -1,8 +1,8 @@
 // Copyright (c) 2026 The Penrose_Delaunay_triangulation_2 authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Lawson flips on a Flat_mesh until every edge is locally Delaunay, with the
-// exact predicates of Epick on the double coordinates and the symbolic
+// Lawson flips on a Flat_mesh until every edge is locally Delaunay, with
+// exact predicates on the double coordinates (a filter, then Epick's) and the symbolic
 // perturbation of Triangulation_2::side_of_oriented_circle(..., true): the
 // flips end in exactly the triangulation that Delaunay_triangulation_2
 // builds from the same points, cocircular points included.
@@ -10,6 +10,7 @@
 #ifndef CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_FLAT_MESH_DELAUNAY_H
 #define CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_FLAT_MESH_DELAUNAY_H
 
+#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Fast_predicates.h>
 #include <CGAL/Penrose_Delaunay_triangulation_2/internal/Flat_mesh.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -26,6 +27,8 @@ namespace Penrose {
 inline Oriented_side perturbed_side_of_oriented_circle(const Epick::Point_2& p0, const Epick::Point_2& p1,
                                                        const Epick::Point_2& p2, const Epick::Point_2& p)
 {
+  const Sign filtered = filtered_in_circle(p0.x(), p0.y(), p1.x(), p1.y(), p2.x(), p2.y(), p.x(), p.y());
+  if(filtered != ZERO) return Oriented_side(filtered);
   const Oriented_side os = Epick::Side_of_oriented_circle_2()(p0, p1, p2, p);
   if(os != ON_ORIENTED_BOUNDARY) return os;
   const Epick::Point_2* points[4] = {&p0, &p1, &p2, &p};
