@@ -15,7 +15,9 @@
 // is at least 1e-200; below that, or where it may overflow, nothing is
 // decided. The filters cost less than Epick's static filters: in a 10^6-point
 // construction the flips take 14 ms less (93 to 79 ms) and the moves and
-// removals 3 ms less, and they decide every one of its tests.
+// removals 3 ms less. They decide all of its 4.7 million in-circle tests,
+// and all but 638 of its 2.2 million orientation tests (points on the
+// edges that the tiles split, collinear up to rounding).
 
 #ifndef CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_FAST_PREDICATES_H
 #define CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_FAST_PREDICATES_H
