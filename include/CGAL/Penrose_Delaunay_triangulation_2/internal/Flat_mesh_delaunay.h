@@ -90,7 +90,7 @@ inline std::size_t flip_from(Flat_mesh& m, Flat_mesh::Index f0, int i0, Flat_mes
 inline std::size_t make_delaunay(Flat_mesh& m)
 {
   typedef Flat_mesh::Index Index;
-  constexpr Index ahead = 8;
+  constexpr Index ahead = Flat_mesh::fetch_distance;
   std::vector<std::pair<Index, int>> stack;
   std::size_t flips = 0;
   const Index nf = Index(m.faces.size());
