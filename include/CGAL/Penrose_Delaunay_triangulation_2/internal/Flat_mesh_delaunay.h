@@ -2,10 +2,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Lawson flips on a Flat_mesh until every edge is locally Delaunay, with
-// exact predicates on the double coordinates (a filter, then Epick's) and the symbolic
-// perturbation of Triangulation_2::side_of_oriented_circle(..., true): the
-// flips end in exactly the triangulation that Delaunay_triangulation_2
-// builds from the same points, cocircular points included.
+// exact predicates on the double coordinates (Fast_predicates, then Epick's)
+// and the symbolic perturbation of
+// Triangulation_2::side_of_oriented_circle(..., true): the flips end in
+// exactly the triangulation that Delaunay_triangulation_2 builds from the
+// same points, cocircular points included.
 
 #ifndef CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_FLAT_MESH_DELAUNAY_H
 #define CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_FLAT_MESH_DELAUNAY_H
