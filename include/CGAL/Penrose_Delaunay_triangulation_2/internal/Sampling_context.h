@@ -83,8 +83,9 @@ public:
     root_y_[1] = root_y_[0] + phi * phi * root_scale_ * u.y[15];
     root_x_[2] = root_x_[0] + phi * root_scale_ * u.x[17];
     root_y_[2] = root_y_[0] + phi * root_scale_ * u.y[17];
-    // A sample never moves more than this many scales of the tile it is born in.
-    margin_factor_ = (std::max)(1., table_ == nullptr ? 0. : table_->max_length());
+    // A sample moves at most max_length() scales of its leaf level, which is
+    // at least its birth level; the factor covers the rounding of the moves.
+    margin_factor_ = table_ == nullptr ? 0. : table_->max_length() * (1. + 1e-6);
     set_finest_level();
     max_importance_ = fibonacci().level_importance[max_level + 1];
     structural_bits_ = table_ ? table_->structural_bits : default_structural_bits;
@@ -133,7 +134,9 @@ public:
   }
 
   // Whether a tile of level `level` whose F-code has Fibonacci value
-  // `threshold` is subdivided: only if a sample of its subtree can be active.
+  // `threshold` is subdivided: only if a sample of its subtree can land in
+  // the region (the uniform levels of C.6 are subdivided only there), and
+  // be active.
   // Every sample born below it has a threshold of at least `threshold` +
   // F(2 level + 2) (C.7), which is also above the least importance that
   // needs the level (C.5): a tile whose thresholds are all out of reach is a
@@ -141,11 +144,12 @@ public:
   bool should_refine(int level, std::uint64_t threshold,
                      const double* x, const double* y, const double* importance) const
   {
-    if(level < uniform_levels) return true;
     const double bx0 = (std::min)({x[0], x[1], x[2]}), bx1 = (std::max)({x[0], x[1], x[2]});
     const double by0 = (std::min)({y[0], y[1], y[2]}), by1 = (std::max)({y[0], y[1], y[2]});
-    const double m = margin_factor_ * scale_[level];
+    // the samples born below the tile, at level + 1 or deeper, land within m of it
+    const double m = margin_factor_ * scale_[level + 1];
     if(bx1 < xmin_ - m || bx0 > xmax_ + m || by1 < ymin_ - m || by0 > ymax_ + m) return false;
+    if(level < uniform_levels) return true;
     const double least = static_cast<double>(threshold + fibonacci().fib[2 * level + 2]);
     // the corners decide when they already reach a threshold: the bound over
     // the tile, or the centroid, is asked only when they do not
