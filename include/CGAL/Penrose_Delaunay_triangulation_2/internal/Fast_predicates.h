@@ -15,7 +15,7 @@
 // is at least 1e-200; below that, or where it may overflow, nothing is
 // decided. The filters cost less than Epick's static filters: in a 10^6-point
 // construction the flips take 79 instead of 93 ms for the constant density
-// (88 instead of 121 for the ramp), and the moves and removals 3 to 4 ms
+// (88 instead of 121 for the ramp), and the moves and removals 3 to 5 ms
 // less. They decide all of its 4.7 million in-circle tests,
 // and all but 638 of its 2.2 million orientation tests (points on the
 // edges that the tiles split, collinear up to rounding).
