@@ -28,24 +28,30 @@ void for_each_sample_depth_first(const Sampling_context& context, Visitor&& visi
     Tile_type type;
     std::uint8_t direction, level;
   };
-  // each subdivision pops one node and pushes at most three
+  // each subdivision pops one node and pushes at most three; a node is
+  // pushed only if it is to be subdivided, so that the tiles that end as
+  // leaves, most of them, are tested but never written
   std::array<Node, 2 * max_level + 8> stack;
   std::size_t top = 0;
 
-  Node& root = stack[top++];
+  Node& root = stack[0];
   for(int i = 0; i < 3; ++i) {
     root.x[i] = context.root_x(i);
     root.y[i] = context.root_y(i);
     root.importance[i] = context.importance(root.x[i], root.y[i]);
   }
   root.code = 0; root.threshold = 0; root.type = FAT_F; root.direction = 15; root.level = 0;
+  if(context.should_refine(root.level, root.threshold, root.x, root.y, root.importance)) ++top;
 
   double x[5], y[5], importance[5];
   while(top > 0) {
-    const Node t = stack[--top];
-    if(!context.should_refine(t.level, t.threshold, t.x, t.y, t.importance)) continue;
+    // read in place, not copied: a copy of a node just pushed stalls on the
+    // stores that wrote it. Its children overwrite it, once it is read.
+    const Node& t = stack[--top];
     const Subdivision_rule& r = rule(t.type);
     for(int i = 0; i < 3; ++i) { x[i] = t.x[i]; y[i] = t.y[i]; importance[i] = t.importance[i]; }
+    const std::uint64_t code = t.code, threshold = t.threshold;
+    const std::uint8_t direction = t.direction;
     const int child_level = t.level + 1;
     for(int k = 0; k < r.number_of_new_vertices; ++k) {
       const New_vertex_rule& nv = r.new_vertices[k];
@@ -54,26 +60,28 @@ void for_each_sample_depth_first(const Sampling_context& context, Visitor&& visi
       y[v] = y[nv.near_corner] + split_fraction * (y[nv.far_corner] - y[nv.near_corner]);
       importance[v] = context.importance(x[v], y[v]);
       if(nv.is_sample) {
-        const Sample_birth b = { t.code * 4 + r.sample_code_pair,
-                                 t.threshold + pair_weight(r.sample_code_pair, child_level),
+        const Sample_birth b = { code * 4 + r.sample_code_pair,
+                                 threshold + pair_weight(r.sample_code_pair, child_level),
                                  static_cast<std::uint8_t>(child_level),
-                                 add_direction(t.direction, r.sample_direction_step) };
+                                 add_direction(direction, r.sample_direction_step) };
         visit(x[v], y[v], importance[v], b);
       }
     }
     for(int c = r.number_of_children - 1; c >= 0; --c) {
       const Child_rule& cr = r.children[c];
-      Node& n = stack[top++];
+      Node& n = stack[top];
       for(int i = 0; i < 3; ++i) {
         n.x[i] = x[cr.corners[i]];
         n.y[i] = y[cr.corners[i]];
         n.importance[i] = importance[cr.corners[i]];
       }
-      n.code = t.code * 4 + cr.code_pair;
-      n.threshold = t.threshold + pair_weight(cr.code_pair, child_level);
+      n.threshold = threshold + pair_weight(cr.code_pair, child_level);
+      if(!context.should_refine(child_level, n.threshold, n.x, n.y, n.importance)) continue;
+      n.code = code * 4 + cr.code_pair;
       n.type = cr.type;
-      n.direction = add_direction(t.direction, cr.direction_step);
+      n.direction = add_direction(direction, cr.direction_step);
       n.level = static_cast<std::uint8_t>(child_level);
+      ++top;
     }
   }
 }
