@@ -28,9 +28,10 @@ void for_each_sample_depth_first(const Sampling_context& context, Visitor&& visi
     Tile_type type;
     std::uint8_t direction, level;
   };
-  // each subdivision pops one node and pushes at most three; a node is
-  // pushed only if it is to be subdivided, so that the tiles that end as
-  // leaves, most of them, are tested but never written
+  // each subdivision pops one node and pushes at most three. A child is
+  // assembled in the free slot above the top and tested there: it is pushed
+  // only if it is to be subdivided, so that the leaves, most of the tiles,
+  // cost no pop
   std::array<Node, 2 * max_level + 8> stack;
   std::size_t top = 0;
 
