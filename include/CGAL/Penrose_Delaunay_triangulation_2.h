@@ -10,6 +10,7 @@
 #include <CGAL/Penrose_Delaunay_triangulation_2/internal/Flat_mesh.h>
 #include <CGAL/Penrose_Delaunay_triangulation_2/internal/Flat_mesh_delaunay.h>
 #include <CGAL/Penrose_Delaunay_triangulation_2/internal/Flat_mesh_editing.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Tds_reservation.h>
 
 #include <CGAL/Default.h>
 #include <CGAL/Delaunay_triangulation_2.h>
@@ -66,8 +67,15 @@ exact.
 It is a `Delaunay_triangulation_2<Gt, Tds>`: every operation of that class
 works on it after construction.
 
+On a machine with more than one core, and unless `CGAL_HAS_NO_THREADS` is
+defined, a construction starts one helper thread, which reserves the TDS's
+storage while step 4 runs: most of the cost of writing a TDS is the first
+touch of its memory. The helper creates no vertex or face and calls neither
+the traits nor the lift, and it has ended when the constructor or `build()`
+returns or throws. The triangulation is the same either way.
+
 A construction that would not fit in the machine's memory (its peak is
-about 200 bytes per point with the default TDS), or that has more than
+about 220 bytes per point with the default TDS), or that has more than
 about \f$1.7 \times 10^9\f$ points, is refused before anything is allocated:
 the constructors and `build()` throw `std::length_error`.
 
@@ -217,15 +225,18 @@ public:
     if(!proceed(0.61)) return abandon();
     const std::vector<Index> unplaced = editor.move_vertices(target, stats_.repaired_vertices);
     if(!proceed(0.66)) return abandon();
-    stats_.flips = internal::Penrose::make_delaunay(mesh);
-    if(!proceed(0.84)) return abandon();
 
     // keep of the targets only what is still needed, before the TDS grows
     std::vector<std::pair<double, double>> unplaced_target;
     for(Index v : unplaced) unplaced_target.push_back(target[v]);
     decltype(target)().swap(target);
+    // (at most this many vertices, and one infinite; two faces per vertex, less four)
+    const std::size_t live = stats_.base_vertices + frame.size() - stats_.removed_vertices;
+    internal::Penrose::Tds_reservation<Triangulation_data_structure> reservation(live + 1, 2 * live - 2);
+    stats_.flips = internal::Penrose::make_delaunay(mesh);
+    if(!proceed(0.84)) return abandon();
 
-    auto handle = write_tds(mesh, lift);
+    auto handle = write_tds(mesh, lift, reservation.tds());
     mesh = Flat_mesh();
     if(!proceed(0.99)) return abandon();
     for(Index v : stuck) this->remove(handle[v]);
@@ -259,14 +270,14 @@ public:
   /// @}
 
 private:
-  // The peak of a construction: the flat mesh's faces and links (about 80
-  // bytes per point at the peak, which is while the TDS is written) and the
-  // TDS itself, with two faces per vertex.
+  // The peak of a construction: the flat mesh (about 100 bytes per point at
+  // the peak, which is while the mesh is made Delaunay and the TDS's storage
+  // is reserved beside it) and the TDS itself, with two faces per vertex.
   static double peak_bytes_per_point()
   {
     typedef typename Triangulation_data_structure::Vertex Vertex;
     typedef typename Triangulation_data_structure::Face Face;
-    return 80. + double(sizeof(Vertex)) + 2. * double(sizeof(Face));
+    return 100. + double(sizeof(Vertex)) + 2. * double(sizeof(Face));
   }
 
   struct No_vertex_visitor
@@ -329,14 +340,16 @@ private:
     m.link(h, 0, after, 0);
   }
 
-  // Writes the flat mesh into the TDS; its coordinates are released once the
-  // TDS vertices hold them, so that the two never peak together.
+  // Writes the flat mesh into `fresh`, an empty TDS, which then becomes this
+  // triangulation's; the mesh's coordinates are released once the TDS
+  // vertices hold them, so that the two never peak together.
   template <class Lift>
-  internal::Penrose::Large_vector<Vertex_handle> write_tds(Flat_mesh& m, const Lift& lift)
+  internal::Penrose::Large_vector<Vertex_handle> write_tds(Flat_mesh& m, const Lift& lift,
+                                                           Triangulation_data_structure& fresh)
   {
     constexpr std::size_t ahead = Flat_mesh::fetch_distance;
     Triangulation_data_structure& tds = this->tds();
-    tds.clear();
+    tds.swap(fresh);
     const Vertex_handle infinite = tds.create_vertex();
     this->set_infinite_vertex(infinite);
     tds.set_dimension(2);

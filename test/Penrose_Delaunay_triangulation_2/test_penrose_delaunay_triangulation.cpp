@@ -29,6 +29,7 @@
 #include <stdexcept>
 #include <string>
 #include <set>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -157,6 +158,23 @@ TEST(Internals, HugePageAllocatorKeepsContentsAcrossItsThreshold)
   v.shrink_to_fit();
   for(std::uint64_t i = 0; i < 1000; ++i) wrong += v[i] != i * 0x9e3779b97f4a7c15u;
   EXPECT_EQ(wrong, 0u);
+}
+
+TEST(Internals, TdsReservationHandsOverAnEmptyTdsWithRoom)
+{
+  typedef CGAL::Penrose_Delaunay_triangulation_2<Epick>::Triangulation_data_structure Tds;
+  CGAL::internal::Penrose::Tds_reservation<Tds> reservation(50000, 99998);
+  const Tds& tds = reservation.tds();
+  EXPECT_EQ(tds.dimension(), -2);
+  EXPECT_EQ(tds.number_of_vertices(), 0u);
+  EXPECT_EQ(tds.faces().size(), 0u);
+#if defined(CGAL_HAS_THREADS)
+  const bool reserved = std::thread::hardware_concurrency() > 1;
+#else
+  const bool reserved = false;
+#endif
+  EXPECT_EQ(tds.vertices().capacity() >= 50000, reserved);
+  EXPECT_EQ(tds.faces().capacity() >= 99998, reserved);
 }
 
 TEST(Internals, FastPredicatesNeverContradictEpick)
