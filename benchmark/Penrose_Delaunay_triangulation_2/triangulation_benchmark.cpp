@@ -12,9 +12,11 @@
 //       peak resident bytes per point of one construction (run each in its own process)
 //   triangulation_benchmark scaling [constant|ramp]
 //       ns per point at 1e5 and 4e6, five constructions of each in this process
-//   triangulation_benchmark once [N=1e6] [constant|ramp]
-//       ns per point of a single construction (run it in a loop for fresh
-//       processes, where no run inherits the allocator's warm pages)
+//   triangulation_benchmark once [N=1e6] [constant|ramp] [penrose|cgal]
+//       ns per point of a single construction, the Penrose DT's (sampling
+//       included) or CGAL's range insertion of the same points (sampling not
+//       timed); run it in a loop for fresh processes, where no run inherits
+//       the allocator's warm pages
 
 #include <CGAL/Penrose_Delaunay_triangulation_2.h>
 
@@ -127,14 +129,26 @@ static int scaling(const std::string& input)
   return 0;
 }
 
-static int once(double n, const std::string& input)
+static int once(double n, const std::string& input, const std::string& method)
 {
   const Sampler sampler = benchmark_support::unit_square_sampler<K>(input, n);
-  const double t0 = now();
-  Pdt pdt(sampler);
-  const double t = now() - t0;
-  std::cout << input << " " << pdt.number_of_vertices() << " points: " << t / pdt.number_of_vertices() * 1e9
-            << " ns per point\n";
+  double t = 0.;
+  std::size_t count = 0;
+  if(method == "penrose") {
+    const double t0 = now();
+    Pdt pdt(sampler);
+    t = now() - t0;
+    count = pdt.number_of_vertices();
+  } else {
+    std::vector<Point> points;
+    sampler(std::back_inserter(points));
+    const double t0 = now();
+    Dt dt;
+    dt.insert(points.begin(), points.end());
+    t = now() - t0;
+    count = dt.number_of_vertices();
+  }
+  std::cout << input << " " << count << " points: " << t / count * 1e9 << " ns per point (" << method << ")\n";
   return 0;
 }
 
@@ -146,14 +160,15 @@ int main(int argc, char** argv)
     (mode == "speed" && is_size(arg(2, "1e6")) && benchmark_support::is_unit_square_input(arg(3, "constant")) && std::atoi(arg(4, "5").c_str()) >= 1) ||
     (mode == "memory" && (arg(2, "penrose") == "penrose" || arg(2, "penrose") == "cgal") && is_size(arg(3, "1e6"))) ||
     (mode == "scaling" && benchmark_support::is_unit_square_input(arg(2, "constant"))) ||
-    (mode == "once" && is_size(arg(2, "1e6")) && benchmark_support::is_unit_square_input(arg(3, "constant")));
+    (mode == "once" && is_size(arg(2, "1e6")) && benchmark_support::is_unit_square_input(arg(3, "constant")) &&
+     (arg(4, "penrose") == "penrose" || arg(4, "penrose") == "cgal"));
   if(!valid) {
     std::cerr << "usage: triangulation_benchmark speed [N] [constant|ramp] [runs] | memory penrose|cgal [N] | "
-                 "scaling [constant|ramp] | once [N] [constant|ramp]\n";
+                 "scaling [constant|ramp] | once [N] [constant|ramp] [penrose|cgal]\n";
     return 2;
   }
   if(mode == "speed") return speed(std::atof(arg(2, "1e6").c_str()), arg(3, "constant"), std::atoi(arg(4, "5").c_str()));
   if(mode == "memory") return memory(arg(2, "penrose"), std::atof(arg(3, "1e6").c_str()));
   if(mode == "scaling") return scaling(arg(2, "constant"));
-  return once(std::atof(arg(2, "1e6").c_str()), arg(3, "constant"));
+  return once(std::atof(arg(2, "1e6").c_str()), arg(3, "constant"), arg(4, "penrose"));
 }
