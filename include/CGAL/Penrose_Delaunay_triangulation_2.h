@@ -230,7 +230,8 @@ public:
     std::vector<std::pair<double, double>> unplaced_target;
     for(Index v : unplaced) unplaced_target.push_back(target[v]);
     decltype(target)().swap(target);
-    // (at most this many vertices, and one infinite; two faces per vertex, less four)
+    // the TDS will have at most `live` finite vertices and the infinite one,
+    // and twice as many faces as vertices, less four
     const std::size_t live = stats_.base_vertices + frame.size() - stats_.removed_vertices;
     internal::Penrose::Tds_reservation<Triangulation_data_structure> reservation(live + 1, 2 * live - 2);
     stats_.flips = internal::Penrose::make_delaunay(mesh);
@@ -341,8 +342,8 @@ private:
   }
 
   // Writes the flat mesh into `fresh`, an empty TDS, which then becomes this
-  // triangulation's; the mesh's coordinates are released once the TDS
-  // vertices hold them, so that the two never peak together.
+  // triangulation's; the mesh's coordinates are released as soon as the TDS
+  // vertices hold them.
   template <class Lift>
   internal::Penrose::Large_vector<Vertex_handle> write_tds(Flat_mesh& m, const Lift& lift,
                                                            Triangulation_data_structure& fresh)

@@ -163,18 +163,23 @@ TEST(Internals, HugePageAllocatorKeepsContentsAcrossItsThreshold)
 TEST(Internals, TdsReservationHandsOverAnEmptyTdsWithRoom)
 {
   typedef CGAL::Penrose_Delaunay_triangulation_2<Epick>::Triangulation_data_structure Tds;
-  CGAL::internal::Penrose::Tds_reservation<Tds> reservation(50000, 99998);
-  const Tds& tds = reservation.tds();
-  EXPECT_EQ(tds.dimension(), -2);
-  EXPECT_EQ(tds.number_of_vertices(), 0u);
-  EXPECT_EQ(tds.faces().size(), 0u);
+  typedef CGAL::internal::Penrose::Tds_reservation<Tds> Reservation;
+  const std::size_t large = Reservation::least_vertices, small = large - 1;
+  Reservation small_one(small, 2 * small - 2), large_one(large, 2 * large - 2);
+  for(Reservation* reservation : {&small_one, &large_one}) {
+    const Tds& tds = reservation->tds();
+    EXPECT_EQ(tds.dimension(), -2);
+    EXPECT_EQ(tds.number_of_vertices(), 0u);
+    EXPECT_EQ(tds.faces().size(), 0u);
+  }
+  EXPECT_EQ(small_one.tds().vertices().capacity(), 0u);
 #if defined(CGAL_HAS_THREADS)
   const bool reserved = std::thread::hardware_concurrency() > 1;
 #else
   const bool reserved = false;
 #endif
-  EXPECT_EQ(tds.vertices().capacity() >= 50000, reserved);
-  EXPECT_EQ(tds.faces().capacity() >= 99998, reserved);
+  EXPECT_EQ(large_one.tds().vertices().capacity() >= large, reserved);
+  EXPECT_EQ(large_one.tds().faces().capacity() >= 2 * large - 2, reserved);
 }
 
 TEST(Internals, FastPredicatesNeverContradictEpick)
