@@ -67,12 +67,14 @@ exact.
 It is a `Delaunay_triangulation_2<Gt, Tds>`: every operation of that class
 works on it after construction.
 
-On a machine with more than one core, and unless `CGAL_HAS_NO_THREADS` is
-defined, a construction starts one helper thread, which reserves the TDS's
+On a machine with more than one core, a construction of at least
+\f$2^{16}\f$ vertices starts one helper thread, which reserves the TDS's
 storage while step 4 runs: most of the cost of writing a TDS is the first
 touch of its memory. The helper creates no vertex or face and calls neither
 the traits nor the lift, and it has ended when the constructor or `build()`
-returns or throws. The triangulation is the same either way.
+returns or throws. The triangulation is the same either way. Define
+`CGAL_PENROSE_NO_HELPER_THREAD` (or CGAL's `CGAL_HAS_NO_THREADS`) to do
+without it.
 
 A construction that would not fit in the machine's memory (its peak is
 about 220 bytes per point with the default TDS), or that has more than

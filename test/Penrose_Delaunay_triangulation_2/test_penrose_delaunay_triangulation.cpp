@@ -173,7 +173,7 @@ TEST(Internals, TdsReservationHandsOverAnEmptyTdsWithRoom)
     EXPECT_EQ(tds.faces().size(), 0u);
   }
   EXPECT_EQ(small_one.tds().vertices().capacity(), 0u);
-#if defined(CGAL_HAS_THREADS)
+#if defined(CGAL_PENROSE_HELPER_THREAD)
   const bool reserved = std::thread::hardware_concurrency() > 1;
 #else
   const bool reserved = false;

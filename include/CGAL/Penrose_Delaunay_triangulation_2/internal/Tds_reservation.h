@@ -14,7 +14,8 @@
 // The reservation is skipped (the TDS is simply empty) below
 // `least_vertices`, where starting a thread costs more than it saves (at
 // 10^3 points a construction took 12% longer with it, at 3 x 10^4 2% longer,
-// at 10^5 6 to 35% shorter); without threads (CGAL_HAS_NO_THREADS); on a
+// at 10^5 6 to 35% shorter); without threads (CGAL_HAS_NO_THREADS), or where
+// the user asks for none (CGAL_PENROSE_NO_HELPER_THREAD); on a
 // machine with one core; where no thread can be started; for a TDS whose
 // containers have no reserve(); and if the reservation runs out of memory.
 // Writing the TDS then allocates as it goes, and fails there if it must.
@@ -29,7 +30,8 @@
 #include <type_traits>
 #include <utility>
 
-#if defined(CGAL_HAS_THREADS)
+#if defined(CGAL_HAS_THREADS) && !defined(CGAL_PENROSE_NO_HELPER_THREAD)
+#  define CGAL_PENROSE_HELPER_THREAD 1
 #  include <system_error>
 #  include <thread>
 #endif
@@ -55,7 +57,7 @@ public:
   // Starts reserving room for `vertices` vertices and `faces` faces.
   Tds_reservation(std::size_t vertices, std::size_t faces)
   {
-#if defined(CGAL_HAS_THREADS)
+#if defined(CGAL_PENROSE_HELPER_THREAD)
     if constexpr(Has_reservable_containers<Tds>::value)
       if(vertices >= least_vertices && std::thread::hardware_concurrency() > 1) {
         try {
@@ -94,13 +96,13 @@ private:
 
   void wait()
   {
-#if defined(CGAL_HAS_THREADS)
+#if defined(CGAL_PENROSE_HELPER_THREAD)
     if(helper_.joinable()) helper_.join();
 #endif
   }
 
   Tds tds_;
-#if defined(CGAL_HAS_THREADS)
+#if defined(CGAL_PENROSE_HELPER_THREAD)
   std::thread helper_;
 #endif
 };
