@@ -88,6 +88,20 @@ static int speed(double n, const std::string& input, int runs)
   return 0;
 }
 
+// CGAL's range insertion (spatial sort and insert) of the sampler's points:
+// returns the number of vertices, and the time of the insertion alone in
+// `seconds`.
+static std::size_t triangulate_with_cgal(const Sampler& sampler, double& seconds)
+{
+  std::vector<Point> points;
+  sampler(std::back_inserter(points));
+  const double t0 = now();
+  Dt dt;
+  dt.insert(points.begin(), points.end());
+  seconds = now() - t0;
+  return dt.number_of_vertices();
+}
+
 static int memory(const std::string& which, double n)
 {
   const Sampler sampler = benchmark_support::unit_square_sampler<K>("constant", n);
@@ -96,11 +110,8 @@ static int memory(const std::string& which, double n)
     Pdt pdt(sampler);
     count = pdt.number_of_vertices();
   } else {
-    std::vector<Point> points;
-    sampler(std::back_inserter(points));
-    Dt dt;
-    dt.insert(points.begin(), points.end());
-    count = dt.number_of_vertices();
+    double seconds;
+    count = triangulate_with_cgal(sampler, seconds);
   }
   const double peak = benchmark_support::peak_resident_bytes();
   std::cout << which << ": " << count << " points, peak resident " << peak << " bytes, "
@@ -140,13 +151,7 @@ static int once(double n, const std::string& input, const std::string& method)
     t = now() - t0;
     count = pdt.number_of_vertices();
   } else {
-    std::vector<Point> points;
-    sampler(std::back_inserter(points));
-    const double t0 = now();
-    Dt dt;
-    dt.insert(points.begin(), points.end());
-    t = now() - t0;
-    count = dt.number_of_vertices();
+    count = triangulate_with_cgal(sampler, t);
   }
   std::cout << input << " " << count << " points: " << t / count * 1e9 << " ns per point (" << method << ")\n";
   return 0;
