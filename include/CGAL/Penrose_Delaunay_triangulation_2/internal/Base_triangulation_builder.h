@@ -76,6 +76,10 @@ public:
     importance_.reserve(n); target_.reserve(n);
     if(record_births_) birth_.reserve(n);
     m_.faces.reserve(2 * n); m_.face_alive.reserve(2 * n); face_tile_.reserve(2 * n);
+    // Two consecutive levels' tiles take turns in two blocks, reserved once
+    // (untouched pages cost nothing): a level's children are written over its
+    // grandparents, in pages already faulted in.
+    frontier_.reserve(n); next_.reserve(n); work_.reserve(n);
     for(int i = 0; i < 3; ++i) add_vertex(c_.root_x(i), c_.root_y(i), c_.importance(c_.root_x(i), c_.root_y(i)));
     const Tile root = {0, 0, FAT_F, 15, 0, {{0, 1, 2}}, m_.create_face(0, 1, 2)};
     double rx[3], ry[3];
@@ -90,13 +94,8 @@ public:
       // the frontier's faces all exist before the level starts
       face_tile_.resize(m_.faces.size(), null);
       for(std::size_t k = 0; k < frontier_.size(); ++k) face_tile_[frontier_[k].face] = Index(k);
-      decltype(work_)().swap(work_);  // released before its successor is made
-      work_.resize(frontier_.size());
-      // a fresh block for the children (at most 3 per tile, so it never
-      // moves; untouched pages cost nothing): the previous level's block is
-      // released rather than held through the level
-      decltype(next_)().swap(next_);
-      next_.reserve(3 * frontier_.size());
+      work_.assign(frontier_.size(), Work());
+      next_.clear();
       const double done = double(tiles_done), half = 0.5 * double(frontier_.size());
       Index next_child = 0;
       const bool completed =
