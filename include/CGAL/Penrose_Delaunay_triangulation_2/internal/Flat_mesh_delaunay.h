@@ -99,7 +99,7 @@ inline std::size_t make_delaunay(Flat_mesh& m)
     // The walk is bound by memory, not by the predicates: fetch what the
     // test of the edges of a face ahead reads, in two steps (the faces across
     // and the face's vertices, then, once those faces are in, the vertices
-    // across).
+    // across and the two faces beyond each edge, which its flip updates).
     if(f + 2 * ahead < nf) {
       const Flat_mesh::Face& F = m.faces[f + 2 * ahead];
       for(int i = 0; i < 3; ++i) {
@@ -111,8 +111,13 @@ inline std::size_t make_delaunay(Flat_mesh& m)
       const Index h = f + ahead;
       const Flat_mesh::Face& F = m.faces[h];
       for(int i = 0; i < 3; ++i)
-        if(F.n[i] != Flat_mesh::null && h < F.n[i])
-          CGAL_PENROSE_PREFETCH(&m.points[m.faces[F.n[i]].v[m.index_of_neighbor(F.n[i], h)]]);
+        if(F.n[i] != Flat_mesh::null && h < F.n[i]) {
+          const Flat_mesh::Face& G = m.faces[F.n[i]];
+          const int j = m.index_of_neighbor(F.n[i], h);
+          CGAL_PENROSE_PREFETCH(&m.points[G.v[j]]);
+          for(int k : {Flat_mesh::ccw(j), Flat_mesh::cw(j)})
+            if(G.n[k] != Flat_mesh::null) CGAL_PENROSE_PREFETCH(&m.faces[G.n[k]]);
+        }
     }
     if(!m.face_alive[f]) continue;
     // tested here, not through the stack: most edges do not flip
