@@ -119,8 +119,8 @@ public:
   }
 
 private:
-  // A tile that is to be subdivided. Packed in 32 bytes: the frontier of
-  // every level is written to fresh memory, which costs by the byte.
+  // A tile that is to be subdivided. Packed in 32 bytes: every level writes
+  // its children and walks its frontier twice, which costs by the byte.
   struct Tile
   {
     std::uint64_t code;

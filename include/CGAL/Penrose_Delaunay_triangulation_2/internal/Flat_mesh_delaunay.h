@@ -111,9 +111,9 @@ inline std::size_t make_delaunay(Flat_mesh& m)
       const Index h = f + ahead;
       const Flat_mesh::Face& F = m.faces[h];
       for(int i = 0; i < 3; ++i)
-        if(F.n[i] != Flat_mesh::null && h < F.n[i]) {
-          const Flat_mesh::Face& G = m.faces[F.n[i]];
-          const int j = m.index_of_neighbor(F.n[i], h);
+        if(const Index g = F.n[i]; g != Flat_mesh::null && h < g) {
+          const Flat_mesh::Face& G = m.faces[g];
+          const int j = m.index_of_neighbor(g, h);
           CGAL_PENROSE_PREFETCH(&m.points[G.v[j]]);
           for(int k : {Flat_mesh::ccw(j), Flat_mesh::cw(j)})
             if(G.n[k] != Flat_mesh::null) CGAL_PENROSE_PREFETCH(&m.faces[G.n[k]]);
