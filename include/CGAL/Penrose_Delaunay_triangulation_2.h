@@ -68,13 +68,22 @@ It is a `Delaunay_triangulation_2<Gt, Tds>`: every operation of that class
 works on it after construction.
 
 On a machine with more than one core, a construction of at least
-\f$2^{16}\f$ vertices starts one helper thread, which reserves the TDS's
-storage while step 4 runs: most of the cost of writing a TDS is the first
-touch of its memory. The helper creates no vertex or face and calls neither
-the traits nor the lift, and it has ended when the constructor or `build()`
-returns or throws. The triangulation is the same either way. Define
+\f$2^{16}\f$ points uses helper threads, one at a time:
+- during step 1, one that surveys the tiles of a level ahead of the
+  calling thread (the density at their new vertices, which samples are kept,
+  which children are subdivided), while the calling thread builds the mesh.
+  The density (and its bound, if given) is then called from that thread, in
+  the same order as without it, and never from two threads at once;
+- during step 4, one that reserves the TDS's storage: most of the cost of
+  writing a TDS is the first touch of its memory.
+
+The helpers create no vertex or face and call neither the traits nor the
+lift, and they have ended when the constructor or `build()` returns or
+throws; what the density throws in the helper is rethrown to the caller.
+The triangulation is the same either way. Define
 `CGAL_PENROSE_NO_HELPER_THREAD` (or CGAL's `CGAL_HAS_NO_THREADS`) to do
-without it.
+without them, for instance for a density that must be called from the
+calling thread.
 
 A construction that would not fit in the machine's memory (its peak is
 about 220 bytes per point with the default TDS), or that has more than

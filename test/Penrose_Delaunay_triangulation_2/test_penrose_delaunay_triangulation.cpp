@@ -25,6 +25,7 @@
 #include <cstdint>
 #include <functional>
 #include <iostream>
+#include <limits>
 #include <map>
 #include <stdexcept>
 #include <string>
@@ -158,6 +159,107 @@ TEST(Internals, HugePageAllocatorKeepsContentsAcrossItsThreshold)
   v.shrink_to_fit();
   for(std::uint64_t i = 0; i < 1000; ++i) wrong += v[i] != i * 0x9e3779b97f4a7c15u;
   EXPECT_EQ(wrong, 0u);
+}
+
+TEST(Internals, HugePageAllocatorReusesAReleasedBlock)
+{
+  typedef CGAL::internal::Penrose::Huge_page_allocator<double> Allocator;
+  const std::size_t n = 3000000;  // 24 MB
+  Allocator a;
+  double* first = a.allocate(n);
+  for(std::size_t i = 0; i < n; i += 512) first[i] = double(i);
+  a.deallocate(first, n);
+  double* second = a.allocate(n);
+#if defined(CGAL_PENROSE_HUGE_PAGES)
+  EXPECT_EQ(first, second);
+#endif
+  // whatever the kernel did with the released block, it is usable
+  std::size_t wrong = 0;
+  for(std::size_t i = 0; i < n; ++i) second[i] = double(i);
+  for(std::size_t i = 0; i < n; ++i) wrong += second[i] != double(i);
+  EXPECT_EQ(wrong, 0u);
+  a.deallocate(second, n);
+}
+
+TEST(Internals, LookaheadWorkerHandsResultsInOrderAndRethrows)
+{
+  using CGAL::internal::Penrose::Lookahead_worker;
+  for(bool wanted : {false, true}) {
+    Lookahead_worker worker(wanted);
+    if(!wanted) { EXPECT_FALSE(worker.running()); }
+    const std::size_t n = 100000;
+    std::vector<std::size_t> out(n, 0);
+    for(int batch = 1; batch <= 3; ++batch) {
+      worker.start(n, [&out, batch](std::size_t b, std::size_t e) {
+        for(std::size_t k = b; k < e; ++k) out[k] = k * k + std::size_t(batch);
+      });
+      std::size_t wrong = 0;
+      for(std::size_t k = 0; k < n; ++k) {
+        worker.wait_for(k);
+        wrong += out[k] != k * k + std::size_t(batch);
+      }
+      EXPECT_EQ(wrong, 0u) << wanted << " " << batch;
+    }
+    // a job that throws at item 70000: the throw reaches the caller (at
+    // start() without a helper, which does the jobs at once; at the wait
+    // for an item of its chunk with one), and the worker goes on
+    std::string message;
+    std::size_t handed = 0;
+    try {
+      worker.start(n, [](std::size_t b, std::size_t e) {
+        for(std::size_t k = b; k < e; ++k)
+          if(k == 70000) throw std::runtime_error("item 70000");
+      });
+      for(; handed < n; ++handed) worker.wait_for(handed);
+    } catch(const std::runtime_error& e) {
+      message = e.what();
+    }
+    EXPECT_EQ(message, "item 70000") << wanted;
+    EXPECT_LE(handed, 70000u) << wanted;
+    // with a helper, the items before the chunk that threw were handed over
+    if(worker.running()) { EXPECT_GT(handed, 70000u - 1024u); }
+    worker.start(0, [](std::size_t, std::size_t) {});
+    worker.wait_for_all();
+    std::vector<int> empty_batch_seen;
+    worker.start(10, [&empty_batch_seen](std::size_t b, std::size_t e) {
+      for(std::size_t k = b; k < e; ++k) empty_batch_seen.push_back(int(k));
+    });
+    worker.wait_for_all();
+    EXPECT_EQ(empty_batch_seen.size(), 10u) << wanted;
+  }
+}
+
+TEST(Triangulation, BadDensityFoundByTheHelperThrowsAsWithout)
+{
+  // large enough for the builder's helper thread, which calls the density:
+  // a density that fails partway through the tile tree (after a number of
+  // calls, as the sampler's own estimates would not see a bad spot) throws
+  // to the caller with the sampler's message, and leaves the triangulation
+  // usable
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  std::size_t calls = 0, good_calls = std::numeric_limits<std::size_t>::max();
+  auto density = [&calls, &good_calls, nan](const Point& q) { return ++calls > good_calls ? nan : 1. + q.x(); };
+  const Sampler s(unit_square, density, CGAL::parameters::number_of_output_points(200000));
+  good_calls = calls + 100000;
+  std::string message;
+  CGAL::Penrose_Delaunay_triangulation_2<Epick> pdt;
+  try {
+    pdt.build(s, [](double x, double y) { return Point(x, y); });
+  } catch(const std::invalid_argument& e) {
+    message = e.what();
+  }
+  EXPECT_NE(message.find("the density at ("), std::string::npos) << message;
+  EXPECT_NE(message.find("nan"), std::string::npos) << message;
+  EXPECT_TRUE(pdt.is_valid());
+  pdt.insert(Point(0.5, 0.5));
+  EXPECT_TRUE(pdt.is_valid());
+  // and once the density is good again, the same sampler triangulates
+  good_calls = std::numeric_limits<std::size_t>::max();
+  ASSERT_TRUE(pdt.build(s, [](double x, double y) { return Point(x, y); }));
+  std::vector<Point> points;
+  s(std::back_inserter(points));
+  const CGAL::Delaunay_triangulation_2<Epick> dt(points.begin(), points.end());
+  EXPECT_TRUE(edge_set(pdt, xy_of) == edge_set(dt, xy_of));
 }
 
 TEST(Internals, TdsReservationHandsOverAnEmptyTdsWithRoom)

@@ -19,6 +19,7 @@
 #define CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_BASE_TRIANGULATION_BUILDER_H
 
 #include <CGAL/Penrose_Delaunay_triangulation_2/internal/Flat_mesh.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Lookahead_worker.h>
 #include <CGAL/Penrose_Delaunay_triangulation_2/internal/Sampling_context.h>
 #include <CGAL/Penrose_Delaunay_triangulation_2/internal/Split_patterns.h>
 
@@ -80,6 +81,8 @@ public:
     // (untouched pages cost nothing): a level's children are written over its
     // grandparents, in pages already faulted in.
     frontier_.reserve(n); next_.reserve(n); work_.reserve(n);
+    Lookahead_worker helper(expected_points >= least_points_for_helper);
+    if(helper.running()) surveys_.reserve(n);
     for(int i = 0; i < 3; ++i) add_vertex(c_.root_x(i), c_.root_y(i), c_.importance(c_.root_x(i), c_.root_y(i)));
     const Tile root = {0, 0, FAT_F, 15, 0, {{0, 1, 2}}, m_.create_face(0, 1, 2)};
     double rx[3], ry[3];
@@ -98,15 +101,16 @@ public:
       next_.clear();
       const double done = double(tiles_done), half = 0.5 * double(frontier_.size());
       Index next_child = 0;
+      if(helper.running() && level == 0) start_surveys(helper, frontier_, level);
       const bool completed =
         for_each_tile([&](std::size_t k) { return report(done + 0.5 * k); },
-                      [this](const Tile& t) {
-                        for(Index c : t.corners) {
-                          CGAL_PENROSE_PREFETCH(&m_.points[c]);
-                          CGAL_PENROSE_PREFETCH(&importance_[c]);
-                        }
-                      },
-                      [this, level](std::size_t k) { create_vertices(k, level); }) &&
+                      [this, &helper](const Tile& t) { if(!helper.running()) fetch_corners(t); },
+                      [this, &helper, level](std::size_t k) {
+                        if(!helper.running()) { create_vertices(k, level, survey(frontier_[k], level), helper); return; }
+                        helper.wait_for(k);
+                        create_vertices(k, level, surveys_[k], helper);
+                      }) &&
+        (!helper.running() || start_surveys(helper, next_, level + 1)) &&
         for_each_tile([&](std::size_t k) { return report(done + half + 0.5 * k); },
                       [](const Tile&) {},
                       [this, &next_child](std::size_t k) { create_triangles(k, next_child); });
@@ -148,6 +152,96 @@ private:
   };
 
   static int slot(int edge) { return edge == 0 ? 0 : 1; }
+
+  // What the subdivision of a tile decides from the importance field alone,
+  // apart from the mesh: where its new vertices are, whether its sample is
+  // kept and where it goes, and which children are subdivided further.
+  struct Survey
+  {
+    Survey() {}  // left as it is: the helper writes every survey before it is read
+
+    std::array<double, 2> x, y, importance;  // of new vertex n
+    double target_x, target_y;               // of the sample, if kept
+    bool kept;
+    std::uint8_t refined_children;           // bit c: child c
+  };
+
+  // Below this many points a helper thread costs more than it saves.
+  static constexpr double least_points_for_helper = double(std::size_t(1) << 16);
+
+  // Hands the helper the surveys of the tiles of `level`, to be written in
+  // surveys_. Its jobs read the tiles, and the points and importances of
+  // their corners, all of them written before; the caller meanwhile only
+  // appends vertices and writes the tiles' faces. Returns true.
+  bool start_surveys(Lookahead_worker& helper, const Large_vector<Tile>& tiles, int level)
+  {
+    if(surveys_.size() < tiles.size()) surveys_.resize(tiles.size());
+    const Tile* t = tiles.data();
+    Survey* s = surveys_.data();
+    const std::size_t n = tiles.size();
+    helper.start(n, [this, t, s, n, level](std::size_t b, std::size_t e) {
+      for(std::size_t k = b; k < e; ++k) {
+        if(k + ahead < n) fetch_corners(t[k + ahead]);
+        s[k] = survey(t[k], level);
+      }
+    });
+    return true;
+  }
+
+  void fetch_corners(const Tile& t) const
+  {
+    for(Index c : t.corners) {
+      CGAL_PENROSE_PREFETCH(&m_.points[c]);
+      CGAL_PENROSE_PREFETCH(&importance_[c]);
+    }
+  }
+
+  Survey survey(const Tile& t, int level) const
+  {
+    const Subdivision_rule& r = rule(t.tile_type());
+    const int child_level = level + 1;
+    Survey s;
+    s.kept = false;
+    s.refined_children = 0;
+    double vx[5], vy[5], vi[5];
+    for(int i = 0; i < 3; ++i) {
+      vx[i] = m_.points[t.corners[i]].x(); vy[i] = m_.points[t.corners[i]].y(); vi[i] = importance_[t.corners[i]];
+    }
+    for(int n = 0; n < r.number_of_new_vertices; ++n) {
+      const New_vertex_rule& nv = r.new_vertices[n];
+      const int a = nv.near_corner, b = nv.far_corner;
+      s.x[n] = vx[3 + n] = vx[a] + split_fraction * (vx[b] - vx[a]);
+      s.y[n] = vy[3 + n] = vy[a] + split_fraction * (vy[b] - vy[a]);
+      s.importance[n] = vi[3 + n] = c_.importance(vx[3 + n], vy[3 + n]);
+      Placed_sample p;
+      if(nv.is_sample && c_.activate(vx[3 + n], vy[3 + n], vi[3 + n], sample_birth(t, r, child_level), p)
+         && c_.contains(p.x, p.y)) {
+        s.kept = true;
+        s.target_x = p.x; s.target_y = p.y;
+      }
+    }
+    for(int c = 0; c < r.number_of_children; ++c) {
+      const Child_rule& cr = r.children[c];
+      double cx[3], cy[3], ci[3];
+      for(int i = 0; i < 3; ++i) {
+        const int j = cr.corners[i];
+        cx[i] = vx[j]; cy[i] = vy[j]; ci[i] = vi[j];
+      }
+      if(c_.should_refine(child_level, child_threshold(t, cr, child_level), cx, cy, ci)) s.refined_children |= 1u << c;
+    }
+    return s;
+  }
+
+  static Sample_birth sample_birth(const Tile& t, const Subdivision_rule& r, int child_level)
+  {
+    return { t.code * 4 + r.sample_code_pair, t.threshold + pair_weight(r.sample_code_pair, child_level),
+             static_cast<std::uint8_t>(child_level), add_direction(t.tile_direction(), r.sample_direction_step) };
+  }
+
+  static std::uint64_t child_threshold(const Tile& t, const Child_rule& cr, int child_level)
+  {
+    return t.threshold + pair_weight(cr.code_pair, child_level);
+  }
 
   // Runs `step(k)` on every tile k of the frontier, while `proceed(k)`,
   // asked now and then, agrees. The walk is bound by memory: it fetches what
@@ -196,70 +290,53 @@ private:
   }
 
   // Phase 1: the samples born on the new vertices, and the children that
-  // will be subdivided. A new vertex enters the mesh only once it is known to
-  // be present, kept or a corner of a subdivided child (of this tile or of
-  // the one across); until then each of the two tiles computes its position
-  // and importance itself (the same doubles from the same operands).
-  void create_vertices(std::size_t k, int level)
+  // will be subdivided, as the tile's survey decided. A new vertex enters
+  // the mesh only once it is known to be present, kept or a corner of a
+  // subdivided child (of this tile or of the one across); the two tiles of
+  // an edge survey its vertex alike (the same doubles from the same
+  // operands).
+  void create_vertices(std::size_t k, int level, const Survey& s, Lookahead_worker& helper)
   {
     const Tile& t = frontier_[k];
     Work& w = work_[k];
     const Subdivision_rule& r = rule(t.tile_type());
     const int child_level = level + 1;
     std::array<Index, 5> v = {{t.corners[0], t.corners[1], t.corners[2], null, null}};
-    double vx[5], vy[5], vi[5];
-    for(int i = 0; i < 3; ++i) { vx[i] = m_.points[v[i]].x(); vy[i] = m_.points[v[i]].y(); vi[i] = importance_[v[i]]; }
     for(int n = 0; n < r.number_of_new_vertices; ++n) {
       const New_vertex_rule& nv = r.new_vertices[n];
-      const int a = nv.near_corner, b = nv.far_corner;
-      vx[3 + n] = vx[a] + split_fraction * (vx[b] - vx[a]);
-      vy[3 + n] = vy[a] + split_fraction * (vy[b] - vy[a]);
       Index& x = w.new_vertices[slot(nv.edge)];
-      vi[3 + n] = (x != null) ? importance_[x] : c_.importance(vx[3 + n], vy[3 + n]);
-      if(nv.is_sample) {
-        const Sample_birth birth = { t.code * 4 + r.sample_code_pair,
-                                     t.threshold + pair_weight(r.sample_code_pair, child_level),
-                                     static_cast<std::uint8_t>(child_level),
-                                     add_direction(t.tile_direction(), r.sample_direction_step) };
-        if(kept(vx[3 + n], vy[3 + n], vi[3 + n], birth)) {
-          if(x == null) add_new_vertex(k, nv.edge, vx[3 + n], vy[3 + n], vi[3 + n]);
-          target_[x] = {scratch_.x, scratch_.y};
-          if(record_births_) birth_[x] = birth;
-        }
+      if(nv.is_sample && s.kept) {
+        if(x == null) add_new_vertex(k, nv.edge, s.x[n], s.y[n], s.importance[n], helper);
+        target_[x] = {s.target_x, s.target_y};
+        if(record_births_) birth_[x] = sample_birth(t, r, child_level);
       }
       v[3 + n] = x;
     }
     for(int c = 0; c < r.number_of_children; ++c) {
+      if(!(s.refined_children >> c & 1u)) continue;
       const Child_rule& cr = r.children[c];
-      double cx[3], cy[3], ci[3];
-      for(int i = 0; i < 3; ++i) {
-        const int j = cr.corners[i];
-        cx[i] = vx[j]; cy[i] = vy[j]; ci[i] = vi[j];
-      }
-      const std::uint64_t threshold = t.threshold + pair_weight(cr.code_pair, child_level);
-      if(!c_.should_refine(child_level, threshold, cx, cy, ci)) continue;
-      Tile child;
+      std::array<Index, 3> corners;
       for(int i = 0; i < 3; ++i) {
         const int j = cr.corners[i];
         if(v[j] == null)
-          v[j] = add_new_vertex(k, r.new_vertices[j - 3].edge, vx[j], vy[j], vi[j]);
-        child.corners[i] = v[j];
+          v[j] = add_new_vertex(k, r.new_vertices[j - 3].edge, s.x[j - 3], s.y[j - 3], s.importance[j - 3], helper);
+        corners[i] = v[j];
       }
-      child.code = t.code * 4 + cr.code_pair;
-      child.threshold = threshold;
-      child.face = null;
-      child.type = cr.type;
-      child.direction = add_direction(t.tile_direction(), cr.direction_step);
-      child.refined_children = 0;
       frontier_[k].refined_children |= 1u << c;
-      next_.push_back(child);
+      // all fields at once: a child assembled field by field on the stack
+      // and then copied stalled the copy's load
+      next_.push_back(Tile{t.code * 4 + cr.code_pair, child_threshold(t, cr, child_level), cr.type,
+                           add_direction(t.tile_direction(), cr.direction_step), 0, corners, null});
     }
   }
 
   // Adds the new vertex of tile k on its edge e, for it and for the tile
   // across, if that one is subdivided at this level too.
-  Index add_new_vertex(std::size_t k, int e, double x, double y, double importance)
+  Index add_new_vertex(std::size_t k, int e, double x, double y, double importance, Lookahead_worker& helper)
   {
+    // the helper's surveys read the points and importances: they must not move under it
+    if(m_.points.size() == m_.points.capacity() || importance_.size() == importance_.capacity())
+      if(helper.running()) helper.wait_for_all();
     const Index v = add_vertex(x, y, importance);
     const Tile& t = frontier_[k];
     work_[k].new_vertices[slot(e)] = v;
@@ -283,13 +360,6 @@ private:
   {
     const int ge = m_.edge_index(g, t.corners[(e + 1) % 3], t.corners[e]);
     return slot((ge + 1) % 3);
-  }
-
-  // Whether the sample born at (x, y) is active and its corrected position,
-  // left in scratch_, is in the region.
-  bool kept(double x, double y, double importance, const Sample_birth& birth)
-  {
-    return c_.activate(x, y, importance, birth, scratch_) && c_.contains(scratch_.x, scratch_.y);
   }
 
   // Phase 2: the triangles of the tile, and their links across its edges.
@@ -395,9 +465,9 @@ private:
   Large_vector<Sample_birth> birth_;  // with record_births_ only
   Large_vector<Tile> frontier_, next_;
   Large_vector<Work> work_;          // for the tiles of frontier_
+  Large_vector<Survey> surveys_;     // for the tiles of frontier_, by the helper
   Large_vector<double> importance_;   // per vertex, at the nearest point of the region
   Large_vector<std::pair<double, double>> target_;  // see take_targets()
-  Placed_sample scratch_;
   Large_vector<Index> face_tile_;    // frontier tile of an intact face, or null
 };
 
