@@ -161,26 +161,6 @@ TEST(Internals, HugePageAllocatorKeepsContentsAcrossItsThreshold)
   EXPECT_EQ(wrong, 0u);
 }
 
-TEST(Internals, HugePageAllocatorReusesAReleasedBlock)
-{
-  typedef CGAL::internal::Penrose::Huge_page_allocator<double> Allocator;
-  const std::size_t n = 3000000;  // 24 MB
-  Allocator a;
-  double* first = a.allocate(n);
-  for(std::size_t i = 0; i < n; i += 512) first[i] = double(i);
-  a.deallocate(first, n);
-  double* second = a.allocate(n);
-#if defined(CGAL_PENROSE_HUGE_PAGES)
-  EXPECT_EQ(first, second);
-#endif
-  // whatever the kernel did with the released block, it is usable
-  std::size_t wrong = 0;
-  for(std::size_t i = 0; i < n; ++i) second[i] = double(i);
-  for(std::size_t i = 0; i < n; ++i) wrong += second[i] != double(i);
-  EXPECT_EQ(wrong, 0u);
-  a.deallocate(second, n);
-}
-
 TEST(Internals, LookaheadWorkerHandsResultsInOrderAndRethrows)
 {
   using CGAL::internal::Penrose::Lookahead_worker;

@@ -10,16 +10,6 @@
 // costs where the system offers them (transparent_hugepage set to `always`
 // or `madvise`); elsewhere, and for small arrays, this is std::allocator.
 // Define CGAL_PENROSE_NO_HUGE_PAGES to use std::allocator always.
-//
-// Released blocks are kept, up to 16 and 1 GiB in all, for the next request
-// of the same size, as malloc keeps the memory of small blocks: a
-// construction needs the same arrays as the last one of its size, and a
-// fresh mapping costs its page faults again; on a virtual machine that hands
-// free memory back to its host (free page reporting), the first touch of
-// such pages can cost several times more. (Marking the kept blocks
-// MADV_FREE, so that the kernel could take them back, made the next
-// constructions slower here: 0.40 s instead of 0.13 s for the first one's
-// base mesh.)
 
 #ifndef CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_HUGE_PAGE_ALLOCATOR_H
 #define CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_HUGE_PAGE_ALLOCATOR_H
@@ -28,76 +18,18 @@
 #include <cstdint>
 #include <memory>
 #include <new>
-#include <utility>
 #include <vector>
 
 #if defined(__linux__) && !defined(CGAL_PENROSE_NO_HUGE_PAGES)
 #  include <sys/mman.h>
 #  if defined(MADV_HUGEPAGE)
 #    define CGAL_PENROSE_HUGE_PAGES 1
-#    include <mutex>
 #  endif
 #endif
 
 namespace CGAL {
 namespace internal {
 namespace Penrose {
-
-#if defined(CGAL_PENROSE_HUGE_PAGES)
-// The huge-page blocks released and kept for reuse, shared by all threads.
-class Released_huge_blocks
-{
-public:
-  // A kept block of exactly `bytes`, or nullptr.
-  static void* take(std::size_t bytes)
-  {
-    Released_huge_blocks& r = instance();
-    std::lock_guard<std::mutex> lock(r.mutex_);
-    for(std::size_t i = r.blocks_.size(); i-- > 0;)
-      if(r.blocks_[i].second == bytes) {
-        void* p = r.blocks_[i].first;
-        r.bytes_ -= bytes;
-        r.blocks_.erase(r.blocks_.begin() + i);
-        return p;
-      }
-    return nullptr;
-  }
-
-  // Keeps the block, unmapping the oldest ones beyond the limits.
-  static void give(void* p, std::size_t bytes)
-  {
-    if(bytes > most_bytes) { munmap(p, bytes); return; }
-    Released_huge_blocks& r = instance();
-    std::lock_guard<std::mutex> lock(r.mutex_);
-    r.blocks_.emplace_back(p, bytes);  // within the capacity reserved: no allocation
-    r.bytes_ += bytes;
-    while(r.blocks_.size() > most_blocks || r.bytes_ > most_bytes) {
-      munmap(r.blocks_.front().first, r.blocks_.front().second);
-      r.bytes_ -= r.blocks_.front().second;
-      r.blocks_.erase(r.blocks_.begin());
-    }
-  }
-
-private:
-  // a construction holds about a dozen large arrays at a time
-  static constexpr std::size_t most_blocks = 16;
-  static constexpr std::size_t most_bytes = std::size_t(1) << 30;
-
-  Released_huge_blocks() { blocks_.reserve(most_blocks + 1); }
-
-  // never destroyed: a block may be released by a static array after every
-  // local static is gone; the process's end unmaps what is kept
-  static Released_huge_blocks& instance()
-  {
-    static Released_huge_blocks* r = new Released_huge_blocks;
-    return *r;
-  }
-
-  std::mutex mutex_;
-  std::vector<std::pair<void*, std::size_t>> blocks_;  // oldest first
-  std::size_t bytes_ = 0;
-};
-#endif
 
 template <class T>
 class Huge_page_allocator
@@ -119,7 +51,7 @@ public:
   void deallocate(T* p, std::size_t n)
   {
 #if defined(CGAL_PENROSE_HUGE_PAGES)
-    if(is_large(n)) { Released_huge_blocks::give(p, rounded(n * sizeof(T))); return; }
+    if(is_large(n)) { munmap(p, rounded(n * sizeof(T))); return; }
 #endif
     std::allocator<T>().deallocate(p, n);
   }
@@ -142,7 +74,6 @@ private:
   {
     if(bytes > std::size_t(-1) - 2 * huge_page) throw std::bad_alloc();
     const std::size_t size = rounded(bytes);
-    if(void* kept = Released_huge_blocks::take(size)) return kept;
     void* raw = mmap(nullptr, size + huge_page, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
     if(raw == MAP_FAILED) throw std::bad_alloc();
     char* const begin = static_cast<char*>(raw);
