@@ -14,6 +14,10 @@
 // both, and the first to triangulate leaves its triangles along the edge to
 // the second. Only the tiles that are still to be subdivided are held, so
 // memory follows the mesh, not the tree.
+//
+// What each tile's subdivision decides from the importance field alone (its
+// survey) is apart from the mesh: a helper thread, where there is one,
+// surveys a level's tiles ahead of the thread that builds the mesh.
 
 #ifndef CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_BASE_TRIANGULATION_BUILDER_H
 #define CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_BASE_TRIANGULATION_BUILDER_H
@@ -110,6 +114,7 @@ public:
                         helper.wait_for(k);
                         create_vertices(k, level, surveys_[k], helper);
                       }) &&
+        // the next level's tiles are all known: surveyed while this level's triangles are linked
         (!helper.running() || start_surveys(helper, next_, level + 1)) &&
         for_each_tile([&](std::size_t k) { return report(done + half + 0.5 * k); },
                       [](const Tile&) {},
