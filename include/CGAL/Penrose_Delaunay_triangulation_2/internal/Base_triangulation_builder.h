@@ -86,7 +86,8 @@ public:
     // grandparents, in pages already faulted in.
     frontier_.reserve(n); next_.reserve(n); work_.reserve(n);
     Lookahead_worker helper(expected_points >= least_points_for_helper);
-    if(helper.running()) surveys_.reserve(n);
+    const bool surveyed_ahead = helper.running();
+    if(surveyed_ahead) surveys_.reserve(n);
     for(int i = 0; i < 3; ++i) add_vertex(c_.root_x(i), c_.root_y(i), c_.importance(c_.root_x(i), c_.root_y(i)));
     const Tile root = {0, 0, FAT_F, 15, 0, {{0, 1, 2}}, m_.create_face(0, 1, 2)};
     double rx[3], ry[3];
@@ -105,17 +106,17 @@ public:
       next_.clear();
       const double done = double(tiles_done), half = 0.5 * double(frontier_.size());
       Index next_child = 0;
-      if(helper.running() && level == 0) start_surveys(helper, frontier_, level);
+      if(surveyed_ahead && level == 0) start_surveys(helper, frontier_, level);
       const bool completed =
         for_each_tile([&](std::size_t k) { return report(done + 0.5 * k); },
-                      [this, &helper](const Tile& t) { if(!helper.running()) fetch_corners(t); },
-                      [this, &helper, level](std::size_t k) {
-                        if(!helper.running()) { create_vertices(k, level, survey(frontier_[k], level), helper); return; }
+                      [this, surveyed_ahead](const Tile& t) { if(!surveyed_ahead) fetch_corners(t); },
+                      [this, &helper, surveyed_ahead, level](std::size_t k) {
+                        if(!surveyed_ahead) { create_vertices(k, level, survey(frontier_[k], level), helper); return; }
                         helper.wait_for(k);
                         create_vertices(k, level, surveys_[k], helper);
                       }) &&
         // the next level's tiles are all known: surveyed while this level's triangles are linked
-        (!helper.running() || start_surveys(helper, next_, level + 1)) &&
+        (!surveyed_ahead || start_surveys(helper, next_, level + 1)) &&
         for_each_tile([&](std::size_t k) { return report(done + half + 0.5 * k); },
                       [](const Tile&) {},
                       [this, &next_child](std::size_t k) { create_triangles(k, next_child); });
@@ -328,8 +329,6 @@ private:
         corners[i] = v[j];
       }
       frontier_[k].refined_children |= 1u << c;
-      // all fields at once: a child assembled field by field on the stack
-      // and then copied stalled the copy's load
       next_.push_back(Tile{t.code * 4 + cr.code_pair, child_threshold(t, cr, child_level), cr.type,
                            add_direction(t.tile_direction(), cr.direction_step), 0, corners, null});
     }
