@@ -89,7 +89,7 @@ public:
     const bool surveyed_ahead = helper.running();
     if(surveyed_ahead) surveys_.reserve(n);
     for(int i = 0; i < 3; ++i) add_vertex(c_.root_x(i), c_.root_y(i), c_.importance(c_.root_x(i), c_.root_y(i)));
-    const Tile root = {0, 0, FAT_F, 15, 0, {{0, 1, 2}}, m_.create_face(0, 1, 2)};
+    const Tile root(0, 0, FAT_F, 15, {{0, 1, 2}}, m_.create_face(0, 1, 2));
     double rx[3], ry[3];
     for(int i = 0; i < 3; ++i) { rx[i] = m_.points[i].x(); ry[i] = m_.points[i].y(); }
     if(c_.should_refine(0, 0, rx, ry, importance_.data())) frontier_.push_back(root);
@@ -133,6 +133,16 @@ private:
   // its children and walks its frontier twice, which costs by the byte.
   struct Tile
   {
+    Tile() = default;
+    // built in place, field by field: a tile assembled on the stack and
+    // copied would be reloaded in wider words than it was stored in, and
+    // such loads wait for the stores to retire
+    Tile(std::uint64_t code, std::uint64_t threshold, Tile_type type, std::uint8_t direction,
+         const std::array<Index, 3>& corners, Index face)
+      : code(code), threshold(threshold), type(type), direction(direction), refined_children(0),
+        corners(corners), face(face)
+    {}
+
     std::uint64_t code;
     std::uint64_t threshold : 52;
     std::uint64_t type : 2;              // a Tile_type
@@ -328,10 +338,12 @@ private:
           v[j] = add_new_vertex(k, r.new_vertices[j - 3].edge, s.x[j - 3], s.y[j - 3], s.importance[j - 3], helper);
         corners[i] = v[j];
       }
-      frontier_[k].refined_children |= 1u << c;
-      next_.push_back(Tile{t.code * 4 + cr.code_pair, child_threshold(t, cr, child_level), cr.type,
-                           add_direction(t.tile_direction(), cr.direction_step), 0, corners, null});
+      next_.emplace_back(t.code * 4 + cr.code_pair, child_threshold(t, cr, child_level), cr.type,
+                         add_direction(t.tile_direction(), cr.direction_step), corners, null);
     }
+    // written once the tile is read no more: a byte stored into the word that
+    // the next child's threshold loads would stall that load
+    frontier_[k].refined_children = s.refined_children;
   }
 
   // Adds the new vertex of tile k on its edge e, for it and for the tile
