@@ -17,6 +17,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <utility>
 #include <vector>
 
@@ -56,12 +57,17 @@ inline bool is_flippable(const Flat_mesh& m, Flat_mesh::Index f, int i)
                                            m.points[m.faces[f].v[i]]) == ON_POSITIVE_SIDE;
 }
 
+// An edge to test, as face * 4 + index, in one word: an edge is most often
+// popped right after it is pushed, and a load wider than the stores it reads
+// (a pair's two halves) would wait for them to retire.
+typedef std::uint64_t Suspect_edge;
+
 // Flips edge i of face f, which is not locally Delaunay, and then every edge
 // that this makes suspect, depth first. Returns the number of flips. An
 // edge both of whose faces come after face `sweep` is left to the sweep of
 // make_delaunay(), which tests it when it reaches the first of them.
 inline std::size_t flip_from(Flat_mesh& m, Flat_mesh::Index f0, int i0, Flat_mesh::Index sweep,
-                             std::vector<std::pair<Flat_mesh::Index, int>>& stack)
+                             std::vector<Suspect_edge>& stack)
 {
   typedef Flat_mesh::Index Index;
   std::size_t flips = 0;
@@ -71,12 +77,13 @@ inline std::size_t flip_from(Flat_mesh& m, Flat_mesh::Index f0, int i0, Flat_mes
     ++flips;
     for(const auto& [h, k] : {std::make_pair(f, 0), std::make_pair(f, 2), std::make_pair(g, 0), std::make_pair(g, 1)}) {
       const Index across = m.faces[h].n[k];
-      if(across != Flat_mesh::null && (h <= sweep || across <= sweep)) stack.emplace_back(h, k);
+      if(across != Flat_mesh::null && (h <= sweep || across <= sweep)) stack.push_back(Suspect_edge(h) << 2 | Suspect_edge(k));
     }
   };
   flip(f0, i0);
   while(!stack.empty()) {
-    const auto [f, i] = stack.back();
+    const Index f = Index(stack.back() >> 2);
+    const int i = int(stack.back() & 3);
     stack.pop_back();
     if(m.faces[f].n[i] != Flat_mesh::null && is_flippable(m, f, i)) flip(f, i);
   }
@@ -92,7 +99,7 @@ inline std::size_t make_delaunay(Flat_mesh& m)
 {
   typedef Flat_mesh::Index Index;
   constexpr Index ahead = Flat_mesh::fetch_distance;
-  std::vector<std::pair<Index, int>> stack;
+  std::vector<Suspect_edge> stack;
   std::size_t flips = 0;
   const Index nf = Index(m.faces.size());
   for(Index f = 0; f < nf; ++f) {
