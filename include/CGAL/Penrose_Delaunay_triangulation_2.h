@@ -90,6 +90,12 @@ about 220 bytes per point with the default TDS), or that has more than
 about \f$1.7 \times 10^9\f$ points, is refused before anything is allocated:
 the constructors and `build()` throw `std::length_error`.
 
+On Linux, the blocks of the internal mesh (on transparent huge pages) are
+kept after a construction for the next one of the same size, about 65 bytes
+per point; a construction unmaps those it does not take back before its
+peak. Define `CGAL_PENROSE_NO_HUGE_PAGES` to allocate with `std::allocator`
+throughout.
+
 \tparam Gt a model of `DelaunayTriangulationTraits_2` with exact predicates
         (for example `Exact_predicates_inexact_constructions_kernel`,
         `Exact_predicates_exact_constructions_kernel`,
@@ -208,7 +214,7 @@ public:
     stats_ = Construction_statistics();
     Flat_mesh mesh;
     // where each sample of the region goes; NaN for the vertices to remove
-    internal::Penrose::Large_vector<std::pair<double, double>> target;
+    internal::Penrose::Scratch_vector<std::pair<double, double>> target;
     std::vector<std::pair<Index, internal::Penrose::Placed_sample>> placed;  // for on_vertex only
     {
       internal::Penrose::Base_triangulation_builder builder(context, mesh, visits);
@@ -244,6 +250,8 @@ public:
     // the TDS will have at most `live` finite vertices and the infinite one,
     // and twice as many faces as vertices, less four
     const std::size_t live = stats_.base_vertices + frame.size() - stats_.removed_vertices;
+    // blocks kept from an earlier construction and not taken by this one would add to its peak
+    internal::Penrose::release_kept_blocks();
     internal::Penrose::Tds_reservation<Triangulation_data_structure> reservation(live + 1, 2 * live - 2);
     stats_.flips = internal::Penrose::make_delaunay(mesh);
     if(!proceed(0.84)) return abandon();

@@ -142,15 +142,18 @@ TEST(Triangulation, LargeEnoughForHugePagesMatchesCgal)
                               CGAL::parameters::number_of_output_points(400000)), "400000 points");
 }
 
-TEST(Internals, HugePageAllocatorKeepsContentsAcrossItsThreshold)
+// Grown one element at a time, a vector of `Vector` moves from
+// std::allocator to mapped pages (aligned to `alignment` where mapped);
+// shrunk, back again. Its contents survive both moves.
+template <class Vector>
+void expect_contents_kept_across_threshold(std::uint64_t n, std::uintptr_t alignment)
 {
-  // grown one element at a time, the vector moves from std::allocator to
-  // mapped huge pages; shrunk, back again
-  CGAL::internal::Penrose::Large_vector<std::uint64_t> v;
-  const std::uint64_t n = 3000000;  // 24 MB
+  Vector v;
   for(std::uint64_t i = 0; i < n; ++i) v.push_back(i * 0x9e3779b97f4a7c15u);
 #if defined(CGAL_PENROSE_HUGE_PAGES)
-  EXPECT_EQ(reinterpret_cast<std::uintptr_t>(v.data()) % (std::uintptr_t(1) << 21), 0u);
+  EXPECT_EQ(reinterpret_cast<std::uintptr_t>(v.data()) % alignment, 0u);
+#else
+  (void)alignment;
 #endif
   std::size_t wrong = 0;
   for(std::uint64_t i = 0; i < n; ++i) wrong += v[i] != i * 0x9e3779b97f4a7c15u;
@@ -159,6 +162,45 @@ TEST(Internals, HugePageAllocatorKeepsContentsAcrossItsThreshold)
   v.shrink_to_fit();
   for(std::uint64_t i = 0; i < 1000; ++i) wrong += v[i] != i * 0x9e3779b97f4a7c15u;
   EXPECT_EQ(wrong, 0u);
+}
+
+TEST(Internals, HugePageAllocatorKeepsContentsAcrossItsThreshold)
+{
+  expect_contents_kept_across_threshold<CGAL::internal::Penrose::Large_vector<std::uint64_t>>(3000000, 1u << 21);
+}
+
+TEST(Internals, SmallPageAllocatorKeepsContentsAcrossItsThreshold)
+{
+  expect_contents_kept_across_threshold<CGAL::internal::Penrose::Scratch_vector<std::uint64_t>>(1000000, 4096u);
+}
+
+TEST(Internals, HugePageAllocatorReusesAReleasedBlockUntilReleasedForGood)
+{
+  typedef CGAL::internal::Penrose::Huge_page_allocator<double> Allocator;
+  const std::size_t n = 3000000;  // 24 MB
+  Allocator a;
+  double* first = a.allocate(n);
+  for(std::size_t i = 0; i < n; i += 512) first[i] = double(i);
+  a.deallocate(first, n);
+  double* second = a.allocate(n);
+#if defined(CGAL_PENROSE_HUGE_PAGES)
+  EXPECT_EQ(first, second);
+#endif
+  // whatever the kernel did with the released block, it is usable
+  std::size_t wrong = 0;
+  for(std::size_t i = 0; i < n; ++i) second[i] = double(i);
+  for(std::size_t i = 0; i < n; ++i) wrong += second[i] != double(i);
+  EXPECT_EQ(wrong, 0u);
+  a.deallocate(second, n);
+  // unmapped now: a fresh mapping reads as zeros (malloc's memory need not)
+  CGAL::internal::Penrose::release_kept_blocks();
+  double* third = a.allocate(n);
+#if defined(CGAL_PENROSE_HUGE_PAGES)
+  for(std::size_t i = 0; i < n; i += 512) wrong += third[i] != 0.;
+  EXPECT_EQ(wrong, 0u);
+#endif
+  a.deallocate(third, n);
+  CGAL::internal::Penrose::release_kept_blocks();
 }
 
 TEST(Internals, LookaheadWorkerHandsResultsInOrderAndRethrows)

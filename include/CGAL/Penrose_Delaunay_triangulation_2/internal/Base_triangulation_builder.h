@@ -54,7 +54,7 @@ public:
 
   // Where each vertex of the mesh goes: its corrected position if it is an
   // active sample that lands in the region, NaN otherwise (to be removed).
-  Large_vector<std::pair<double, double>> take_targets() { return std::move(target_); }
+  Scratch_vector<std::pair<double, double>> take_targets() { return std::move(target_); }
 
   // The sample at kept vertex v, with the data of its leaf tile; needs
   // `record_births`.
@@ -139,7 +139,7 @@ private:
     // such loads wait for the stores to retire
     Tile(std::uint64_t code, std::uint64_t threshold, Tile_type type, std::uint8_t direction,
          const std::array<Index, 3>& corners, Index face)
-      : code(code), threshold(threshold), type(type), direction(direction), refined_children(0),
+      : code(code), threshold(threshold), type(type), direction(direction), refined_children(0), unused(0),
         corners(corners), face(face)
     {}
 
@@ -148,6 +148,7 @@ private:
     std::uint64_t type : 2;              // a Tile_type
     std::uint64_t direction : 5;
     std::uint64_t refined_children : 3;  // bit c: child c is in the next frontier
+    std::uint64_t unused : 2;            // set, so that the word is stored whole, not merged into memory
     std::array<Index, 3> corners;
     Index face;
 
@@ -189,7 +190,7 @@ private:
   // surveys_. Its jobs read the tiles, and the points and importances of
   // their corners, all of them written before; the caller meanwhile only
   // appends vertices and writes the tiles' faces. Returns true.
-  bool start_surveys(Lookahead_worker& helper, const Large_vector<Tile>& tiles, int level)
+  bool start_surveys(Lookahead_worker& helper, const Scratch_vector<Tile>& tiles, int level)
   {
     if(surveys_.size() < tiles.size()) surveys_.resize(tiles.size());
     const Tile* t = tiles.data();
@@ -478,13 +479,16 @@ private:
   const Sampling_context& c_;
   Flat_mesh& m_;
   const bool record_births_;
-  Large_vector<Sample_birth> birth_;  // with record_births_ only
-  Large_vector<Tile> frontier_, next_;
-  Large_vector<Work> work_;          // for the tiles of frontier_
-  Large_vector<Survey> surveys_;     // for the tiles of frontier_, by the helper
-  Large_vector<double> importance_;   // per vertex, at the nearest point of the region
-  Large_vector<std::pair<double, double>> target_;  // see take_targets()
-  Large_vector<Index> face_tile_;    // frontier tile of an intact face, or null
+  // The builder's own arrays are on small pages, unlike the mesh's: they
+  // serve this build only, and fresh huge pages may cost a host fault each on
+  // a virtual machine (see Huge_page_allocator.h).
+  Scratch_vector<Sample_birth> birth_;  // with record_births_ only
+  Scratch_vector<Tile> frontier_, next_;
+  Scratch_vector<Work> work_;          // for the tiles of frontier_
+  Scratch_vector<Survey> surveys_;     // for the tiles of frontier_, by the helper
+  Scratch_vector<double> importance_;   // per vertex, at the nearest point of the region
+  Scratch_vector<std::pair<double, double>> target_;  // see take_targets()
+  Scratch_vector<Index> face_tile_;    // frontier tile of an intact face, or null
 };
 
 } // namespace Penrose
