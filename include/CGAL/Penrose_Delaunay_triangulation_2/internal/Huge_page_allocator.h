@@ -1,9 +1,9 @@
 // Copyright (c) 2026 The Penrose_Delaunay_triangulation_2 authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// An allocator for the construction's large flat arrays (a few to tens of
-// bytes per point each), which asks Linux to back them with transparent huge
-// pages. The construction touches each such array once at growth and then
+// Allocators for the construction's large flat arrays (a few to tens of
+// bytes per point each): those that live to the end of a construction are
+// backed by transparent huge pages, the others by small pages. The construction touches each such array once at growth and then
 // walks it with little reuse: with 4 KiB pages, a fresh process spends about
 // a fifth of the construction in page faults (85,000 of them at 10^6
 // points), and each walk misses the TLB. Huge pages (2 MiB) remove both
@@ -127,84 +127,75 @@ inline void release_kept_blocks()
 #endif
 }
 
-template <class T>
-class Huge_page_allocator
+#if defined(CGAL_PENROSE_HUGE_PAGES)
+// Where the large blocks of the arrays that live to the end of a
+// construction come from: whole huge pages at a huge-page boundary, kept
+// once released.
+struct Kept_huge_pages
 {
-public:
-  typedef T value_type;
-
-  Huge_page_allocator() = default;
-  template <class U> Huge_page_allocator(const Huge_page_allocator<U>&) {}
-
-  T* allocate(std::size_t n)
-  {
-#if defined(CGAL_PENROSE_HUGE_PAGES)
-    if(is_large(n)) return static_cast<T*>(map(n * sizeof(T)));
-#endif
-    return std::allocator<T>().allocate(n);
-  }
-
-  void deallocate(T* p, std::size_t n)
-  {
-#if defined(CGAL_PENROSE_HUGE_PAGES)
-    if(is_large(n)) { Released_huge_blocks::give(p, rounded(n * sizeof(T))); return; }
-#endif
-    std::allocator<T>().deallocate(p, n);
-  }
-
-  template <class U> bool operator==(const Huge_page_allocator<U>&) const { return true; }
-  template <class U> bool operator!=(const Huge_page_allocator<U>&) const { return false; }
-
-private:
-  static constexpr std::size_t huge_page = std::size_t(1) << 21;
-
+  static constexpr std::size_t page = std::size_t(1) << 21;
   // below a few huge pages, rounding up would waste more than it saves
-  static bool is_large(std::size_t n) { return n >= 4 * huge_page / sizeof(T); }
-  static std::size_t rounded(std::size_t bytes) { return (bytes + huge_page - 1) & ~(huge_page - 1); }
+  static constexpr std::size_t least_bytes = 4 * page;
 
-#if defined(CGAL_PENROSE_HUGE_PAGES)
-  // Maps whole huge pages at a huge-page boundary: one more page than asked
-  // for is mapped, and what lies before and after the aligned range is
-  // unmapped again.
-  static void* map(std::size_t bytes)
+  // A kept block, or a fresh one: one more page than asked for is mapped,
+  // and what lies before and after the aligned range is unmapped again.
+  static void* map(std::size_t size)
   {
-    if(bytes > std::size_t(-1) - 2 * huge_page) throw std::bad_alloc();
-    const std::size_t size = rounded(bytes);
     if(void* kept = Released_huge_blocks::take(size)) return kept;
-    void* raw = mmap(nullptr, size + huge_page, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+    void* raw = mmap(nullptr, size + page, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
     if(raw == MAP_FAILED) throw std::bad_alloc();
     char* const begin = static_cast<char*>(raw);
-    const std::size_t head = (huge_page - std::uintptr_t(begin) % huge_page) % huge_page;
+    const std::size_t head = (page - std::uintptr_t(begin) % page) % page;
     char* const aligned = begin + head;
     if(head > 0) munmap(begin, head);
-    munmap(aligned + size, huge_page - head);
+    munmap(aligned + size, page - head);
     madvise(aligned, size, MADV_HUGEPAGE);  // advice: its failure is harmless
     return aligned;
   }
-#endif
+
+  static void unmap(void* p, std::size_t size) { Released_huge_blocks::give(p, size); }
 };
 
-// An allocator for large arrays that live through one step of a
-// construction: small pages, mapped and unmapped directly. Through malloc,
-// such an array would raise its threshold for mapping and, freed, stay
-// resident in the heap, adding to the peak of the next construction.
-template <class T>
-class Small_page_allocator
+// Where the large blocks of the arrays that serve one step of a construction
+// come from: small pages, mapped and unmapped directly. Through malloc, such
+// an array would raise its threshold for mapping and, freed, stay resident in
+// the heap, adding to the peak of the next construction.
+struct Small_pages
+{
+  static constexpr std::size_t page = 4096;
+  static constexpr std::size_t least_bytes = std::size_t(1) << 20;
+
+  static void* map(std::size_t size)
+  {
+    void* p = mmap(nullptr, size, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+    if(p == MAP_FAILED) throw std::bad_alloc();
+    return p;
+  }
+
+  static void unmap(void* p, std::size_t size) { munmap(p, size); }
+};
+#else
+struct Kept_huge_pages {};
+struct Small_pages {};
+#endif
+
+// An allocator whose large blocks come from `Pages`; elsewhere, and for
+// small arrays, this is std::allocator.
+template <class T, class Pages>
+class Mapped_allocator
 {
 public:
   typedef T value_type;
 
-  Small_page_allocator() = default;
-  template <class U> Small_page_allocator(const Small_page_allocator<U>&) {}
+  Mapped_allocator() = default;
+  template <class U> Mapped_allocator(const Mapped_allocator<U, Pages>&) {}
 
   T* allocate(std::size_t n)
   {
 #if defined(CGAL_PENROSE_HUGE_PAGES)
     if(is_large(n)) {
-      if(n > std::size_t(-1) / sizeof(T) - page) throw std::bad_alloc();
-      void* p = mmap(nullptr, rounded(n * sizeof(T)), PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
-      if(p == MAP_FAILED) throw std::bad_alloc();
-      return static_cast<T*>(p);
+      if(n > (std::size_t(-1) - 2 * Pages::page) / sizeof(T)) throw std::bad_alloc();
+      return static_cast<T*>(Pages::map(rounded(n)));
     }
 #endif
     return std::allocator<T>().allocate(n);
@@ -213,20 +204,23 @@ public:
   void deallocate(T* p, std::size_t n)
   {
 #if defined(CGAL_PENROSE_HUGE_PAGES)
-    if(is_large(n)) { munmap(p, rounded(n * sizeof(T))); return; }
+    if(is_large(n)) { Pages::unmap(p, rounded(n)); return; }
 #endif
     std::allocator<T>().deallocate(p, n);
   }
 
-  template <class U> bool operator==(const Small_page_allocator<U>&) const { return true; }
-  template <class U> bool operator!=(const Small_page_allocator<U>&) const { return false; }
+  template <class U> bool operator==(const Mapped_allocator<U, Pages>&) const { return true; }
+  template <class U> bool operator!=(const Mapped_allocator<U, Pages>&) const { return false; }
 
 private:
-  static constexpr std::size_t page = 4096;
-
-  static bool is_large(std::size_t n) { return n >= (std::size_t(1) << 20) / sizeof(T); }
-  static std::size_t rounded(std::size_t bytes) { return (bytes + page - 1) & ~(page - 1); }
+#if defined(CGAL_PENROSE_HUGE_PAGES)
+  static bool is_large(std::size_t n) { return n >= Pages::least_bytes / sizeof(T); }
+  static std::size_t rounded(std::size_t n) { return (n * sizeof(T) + Pages::page - 1) & ~(Pages::page - 1); }
+#endif
 };
+
+template <class T>
+using Huge_page_allocator = Mapped_allocator<T, Kept_huge_pages>;
 
 // A vector for the arrays that grow with the number of points and live to
 // the end of a construction.
@@ -236,7 +230,7 @@ using Large_vector = std::vector<T, Huge_page_allocator<T>>;
 // A vector for the arrays that grow with the number of points and serve one
 // step of a construction.
 template <class T>
-using Scratch_vector = std::vector<T, Small_page_allocator<T>>;
+using Scratch_vector = std::vector<T, Mapped_allocator<T, Small_pages>>;
 
 } // namespace Penrose
 } // namespace internal
