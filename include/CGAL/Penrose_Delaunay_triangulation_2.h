@@ -22,6 +22,7 @@
 #include <cstddef>
 #include <functional>
 #include <limits>
+#include <optional>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -216,16 +217,18 @@ public:
     // where each sample of the region goes; NaN for the vertices to remove
     internal::Penrose::Scratch_vector<std::pair<double, double>> target;
     std::vector<std::pair<Index, internal::Penrose::Placed_sample>> placed;  // for on_vertex only
+    // freed by the TDS reservation's helper, where there is one
+    std::optional<internal::Penrose::Base_triangulation_builder> builder;
+    builder.emplace(context, mesh, visits);
     {
-      internal::Penrose::Base_triangulation_builder builder(context, mesh, visits);
       std::function<bool(double)> progress;
       if(callback) progress = [&callback](double f) { return callback(0.58 * f); };
-      if(!builder.build(sampler.expected_number_of_points(), progress)) return abandon();
-      target = builder.take_targets();
+      if(!builder->build(sampler.expected_number_of_points(), progress)) return abandon();
+      target = builder->take_targets();
       if(visits)
         for(Index v = 0; v < target.size(); ++v)
-          if(!std::isnan(target[v].first)) placed.emplace_back(v, builder.sample(v));
-    }  // the builder's tiles are freed here
+          if(!std::isnan(target[v].first)) placed.emplace_back(v, builder->sample(v));
+    }
     for(std::size_t v = 0; v < mesh.points.size(); ++v)
       if(mesh.vertex_face[v] != Flat_mesh::null) ++stats_.base_vertices;
     const std::size_t n = target.size();
@@ -252,7 +255,8 @@ public:
     const std::size_t live = stats_.base_vertices + frame.size() - stats_.removed_vertices;
     // blocks kept from an earlier construction and not taken by this one would add to its peak
     internal::Penrose::release_kept_blocks();
-    internal::Penrose::Tds_reservation<Triangulation_data_structure> reservation(live + 1, 2 * live - 2);
+    internal::Penrose::Tds_reservation<Triangulation_data_structure> reservation(live + 1, 2 * live - 2,
+                                                                                [&builder] { builder.reset(); });
     stats_.flips = internal::Penrose::make_delaunay(mesh);
     if(!proceed(0.84)) return abandon();
 
