@@ -75,8 +75,9 @@ On a machine with more than one core, a construction of at least
   which children are subdivided), while the calling thread builds the mesh.
   The density (and its bound, if given) is then called from that thread, in
   the same order as without it, and never from two threads at once;
-- during step 4, one that reserves the TDS's storage: most of the cost of
-  writing a TDS is the first touch of its memory.
+- during step 4, one that frees the arrays that served step 1 alone, then
+  reserves the TDS's storage: most of the cost of writing a TDS is the
+  first touch of its memory.
 
 The helpers create no vertex or face and call neither the traits nor the
 lift, and they have ended when the constructor or `build()` returns or
