@@ -11,6 +11,7 @@
 #include <CGAL/Penrose_Delaunay_triangulation_2/internal/Flat_mesh_delaunay.h>
 #include <CGAL/Penrose_Delaunay_triangulation_2/internal/Flat_mesh_editing.h>
 #include <CGAL/Penrose_Delaunay_triangulation_2/internal/Tds_reservation.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Two_halves.h>
 
 #include <CGAL/Default.h>
 #include <CGAL/Delaunay_triangulation_2.h>
@@ -77,7 +78,9 @@ On a machine with more than one core, a construction of at least
   the same order as without it, and never from two threads at once;
 - during step 4, one that frees the arrays that served step 1 alone, then
   reserves the TDS's storage: most of the cost of writing a TDS is the
-  first touch of its memory.
+  first touch of its memory;
+- while the TDS is written, one that links half of its faces and gives half
+  of its vertices their face.
 
 The helpers create no vertex or face and call neither the traits nor the
 lift, and they have ended when the constructor or `build()` returns or
@@ -401,30 +404,50 @@ private:
       else h = side[f];
       return h;
     };
+    std::vector<std::pair<Index, int>> boundary;  // edges without a face across
     for(std::size_t f = 0; f < m.faces.size(); ++f)
       if(m.face_alive[f]) {
         if(f + ahead < m.faces.size())
           for(Index v : m.faces[f + ahead].v) CGAL_PENROSE_PREFETCH(&vh[v]);
         const auto& F = m.faces[f];
+        for(int i = 0; i < 3; ++i)
+          if(F.n[i] == Flat_mesh::null) boundary.emplace_back(Index(f), i);
         keep_handle(f, tds.create_face(vh[F.v[0]], vh[F.v[1]], vh[F.v[2]]));
       }
-    std::vector<std::pair<Vertex_handle, Face_handle>> hull;  // infinite face (inf, b, a), keyed by b
-    for(std::size_t f = 0; f < m.faces.size(); ++f) {
-      if(f + ahead < m.faces.size())
-        for(Index g : m.faces[f + ahead].n)
-          if(g != Flat_mesh::null) CGAL_PENROSE_PREFETCH(&m.faces[g]);
-      if(m.face_alive[f]) {
+    // The links and each vertex's face change no container: bound by memory,
+    // they take two threads, in halves.
+    auto link_faces = [&m, &fh](std::size_t begin, std::size_t end) {
+      for(std::size_t f = begin; f < end; ++f) {
+        if(f + ahead < end)
+          for(Index g : m.faces[f + ahead].n)
+            if(g != Flat_mesh::null) CGAL_PENROSE_PREFETCH(&m.faces[g]);
+        if(!m.face_alive[f]) continue;
         const Face_handle F = fh(f);
-        for(int i = 0; i < 3; ++i) {
-          const Index g = m.faces[f].n[i];
-          if(g != Flat_mesh::null) { F->set_neighbor(i, fh(g)); continue; }
-          const Vertex_handle a = F->vertex(Flat_mesh::ccw(i)), b = F->vertex(Flat_mesh::cw(i));
-          const Face_handle h = tds.create_face(infinite, b, a);
-          h->set_neighbor(0, F);
-          F->set_neighbor(i, h);
-          hull.emplace_back(b, h);
-        }
+        for(int i = 0; i < 3; ++i)
+          if(const Index g = m.faces[f].n[i]; g != Flat_mesh::null) F->set_neighbor(i, fh(g));
       }
+    };
+    auto give_vertices_a_face = [&m, &fh, &vh](std::size_t begin, std::size_t end) {
+      for(std::size_t v = begin; v < end; ++v) {
+        if(v + ahead < end && m.vertex_face[v + ahead] != Flat_mesh::null)
+          CGAL_PENROSE_PREFETCH(&m.faces[m.vertex_face[v + ahead]]);
+        if(vh[v] != Vertex_handle()) vh[v]->set_face(fh(m.vertex_face[v]));
+      }
+    };
+    const std::size_t nf = m.faces.size(), nv = vh.size();
+    internal::Penrose::run_in_two_halves(nv >= internal::Penrose::Tds_reservation<Triangulation_data_structure>::least_vertices,
+                                         [&](int half) noexcept {
+                                           link_faces(half * nf / 2, (half + 1) * nf / 2);
+                                           give_vertices_a_face(half * nv / 2, (half + 1) * nv / 2);
+                                         });
+    std::vector<std::pair<Vertex_handle, Face_handle>> hull;  // infinite face (inf, b, a), keyed by b
+    for(const auto& [f, i] : boundary) {
+      const Face_handle F = fh(f);
+      const Vertex_handle a = F->vertex(Flat_mesh::ccw(i)), b = F->vertex(Flat_mesh::cw(i));
+      const Face_handle h = tds.create_face(infinite, b, a);
+      h->set_neighbor(0, F);
+      F->set_neighbor(i, h);
+      hull.emplace_back(b, h);
     }
     // (inf, b, a) borders (inf, a, c) across the edge inf-a, and (inf, d, b) across inf-b
     for(auto& bh : hull)
@@ -433,11 +456,6 @@ private:
           bh.second->set_neighbor(1, other.second);
           other.second->set_neighbor(2, bh.second);
         }
-    for(std::size_t v = 0; v < vh.size(); ++v) {
-      if(v + ahead < vh.size() && m.vertex_face[v + ahead] != Flat_mesh::null)
-        CGAL_PENROSE_PREFETCH(&m.faces[m.vertex_face[v + ahead]]);
-      if(vh[v] != Vertex_handle()) vh[v]->set_face(fh(m.vertex_face[v]));
-    }
     infinite->set_face(hull.front().second);
     return vh;
   }

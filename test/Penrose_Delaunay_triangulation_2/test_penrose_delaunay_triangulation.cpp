@@ -251,6 +251,27 @@ TEST(Internals, LookaheadWorkerHandsResultsInOrderAndRethrows)
   }
 }
 
+TEST(Internals, TwoHalvesRunBothHalvesTheSecondOnAHelper)
+{
+  for(bool worth_a_thread : {false, true}) {
+    std::array<std::thread::id, 2> ran_on;
+    std::array<int, 2> runs = {{0, 0}};
+    CGAL::internal::Penrose::run_in_two_halves(worth_a_thread, [&](int half) noexcept {
+      ran_on[half] = std::this_thread::get_id();
+      ++runs[half];
+    });
+    EXPECT_EQ(runs[0], 1);
+    EXPECT_EQ(runs[1], 1);
+    EXPECT_EQ(ran_on[0], std::this_thread::get_id());
+#if defined(CGAL_PENROSE_TWO_HALVES_THREAD)
+    const bool helped = worth_a_thread && std::thread::hardware_concurrency() > 1;
+#else
+    const bool helped = false;
+#endif
+    EXPECT_EQ(ran_on[1] != std::this_thread::get_id(), helped) << worth_a_thread;
+  }
+}
+
 TEST(Triangulation, BadDensityFoundByTheHelperThrowsAsWithout)
 {
   // large enough for the builder's helper thread, which calls the density:
