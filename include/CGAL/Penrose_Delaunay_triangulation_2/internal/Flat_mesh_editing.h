@@ -12,6 +12,7 @@
 #define CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_FLAT_MESH_EDITING_H
 
 #include <CGAL/Penrose_Delaunay_triangulation_2/internal/Flat_mesh.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Two_halves.h>
 
 #include <array>
 #include <cmath>
@@ -28,6 +29,10 @@ public:
   static constexpr Index null = Flat_mesh::null;
 
   explicit Flat_mesh_editor(Flat_mesh& m) : m_(m) {}
+
+  // Below this many vertices, a second thread for the moves costs more than
+  // it saves.
+  static constexpr std::size_t least_vertices_for_halves = std::size_t(1) << 16;
 
   // Removes interior vertex v. Returns false, changing nothing, if v is on the
   // boundary or its star cannot be filled.
@@ -78,19 +83,30 @@ public:
       m_.points[v] = Flat_mesh::Point(target[v].first, target[v].second);
       target[v] = {p.x(), p.y()};
     };
-    for(Index v = 0; v < target.size(); ++v)
-      if(!std::isnan(target[v].first) && m_.vertex_face[v] != null &&
-         (target[v].first != m_.points[v].x() || target[v].second != m_.points[v].y())) {
-        trade(v);
-        state[v] = 1;
-      }
-    std::vector<Index> folded, next;
+    // The moves at once, and the search for folds, read or write each
+    // vertex's or face's own data: they take two threads, in halves.
+    const bool worth_a_thread = n >= least_vertices_for_halves;
+    const std::size_t nt = target.size();
+    run_in_two_halves(worth_a_thread, [&](int half) noexcept {
+      for(std::size_t v = half * nt / 2; v < (half + 1) * nt / 2; ++v)
+        if(!std::isnan(target[v].first) && m_.vertex_face[v] != null &&
+           (target[v].first != m_.points[v].x() || target[v].second != m_.points[v].y())) {
+          trade(Index(v));
+          state[v] = 1;
+        }
+    });
+    std::array<std::vector<Index>, 2> folded_in;
     const Index nf = Index(m_.faces.size());
-    for(Index f = 0; f < nf; ++f) {
-      if(f + Flat_mesh::fetch_distance < nf)
-        for(Index u : m_.faces[f + Flat_mesh::fetch_distance].v) CGAL_PENROSE_PREFETCH(&m_.points[u]);
-      if(m_.face_alive[f] && !positive(f)) folded.push_back(f);
-    }
+    run_in_two_halves(worth_a_thread, [&](int half) noexcept {
+      const Index end = Index((half + 1) * std::size_t(nf) / 2);
+      for(Index f = Index(half * std::size_t(nf) / 2); f < end; ++f) {
+        if(f + Flat_mesh::fetch_distance < end)
+          for(Index u : m_.faces[f + Flat_mesh::fetch_distance].v) CGAL_PENROSE_PREFETCH(&m_.points[u]);
+        if(m_.face_alive[f] && !positive(f)) folded_in[half].push_back(f);
+      }
+    });
+    std::vector<Index> folded = std::move(folded_in[0]), next;
+    folded.insert(folded.end(), folded_in[1].begin(), folded_in[1].end());
     while(!folded.empty()) {
       next.clear();
       for(Index f : folded) {
