@@ -76,6 +76,8 @@ On a machine with more than one core, a construction of at least
   which children are subdivided), while the calling thread builds the mesh.
   The density (and its bound, if given) is then called from that thread, in
   the same order as without it, and never from two threads at once;
+- during step 3, one that moves half of the samples, then looks for folded
+  triangles among half of the faces;
 - during step 4, one that frees the arrays that served step 1 alone, then
   reserves the TDS's storage: most of the cost of writing a TDS is the
   first touch of its memory;
