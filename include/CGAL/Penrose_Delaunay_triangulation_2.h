@@ -437,11 +437,10 @@ private:
       }
     };
     const std::size_t nf = m.faces.size(), nv = vh.size();
-    internal::Penrose::run_in_two_halves(nv >= internal::Penrose::Tds_reservation<Triangulation_data_structure>::least_vertices,
-                                         [&](int half) noexcept {
-                                           link_faces(half * nf / 2, (half + 1) * nf / 2);
-                                           give_vertices_a_face(half * nv / 2, (half + 1) * nv / 2);
-                                         });
+    internal::Penrose::run_in_two_halves(nv >= internal::Penrose::least_size_for_two_halves, [&](int half) noexcept {
+      link_faces(half * nf / 2, (half + 1) * nf / 2);
+      give_vertices_a_face(half * nv / 2, (half + 1) * nv / 2);
+    });
     std::vector<std::pair<Vertex_handle, Face_handle>> hull;  // infinite face (inf, b, a), keyed by b
     for(const auto& [f, i] : boundary) {
       const Face_handle F = fh(f);

@@ -30,10 +30,6 @@ public:
 
   explicit Flat_mesh_editor(Flat_mesh& m) : m_(m) {}
 
-  // Below this many vertices, a second thread for the moves costs more than
-  // it saves.
-  static constexpr std::size_t least_vertices_for_halves = std::size_t(1) << 16;
-
   // Removes interior vertex v. Returns false, changing nothing, if v is on the
   // boundary or its star cannot be filled.
   bool remove_vertex(Index v)
@@ -85,7 +81,7 @@ public:
     };
     // The moves at once, and the search for folds, read or write each
     // vertex's or face's own data: they take two threads, in halves.
-    const bool worth_a_thread = n >= least_vertices_for_halves;
+    const bool worth_a_thread = n >= least_size_for_two_halves;
     const std::size_t nt = target.size();
     run_in_two_halves(worth_a_thread, [&](int half) noexcept {
       for(std::size_t v = half * nt / 2; v < (half + 1) * nt / 2; ++v)

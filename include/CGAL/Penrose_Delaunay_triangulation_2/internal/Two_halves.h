@@ -4,10 +4,10 @@
 // A walk split in two halves, the second on a helper thread: for the walks
 // whose halves write disjoint data (the links of the TDS written from the
 // flat mesh; the moves of the samples, and the search for folded faces
-// after them). A thread is started for each walk: about 0.1 ms, which the
-// callers spend only from 2^16 vertices on. Whether a
-// helper is used follows the rules of Tds_reservation.h: none without threads
-// (CGAL_HAS_THREADS), where the user asks for none
+// after them). A thread is started for each walk, which the callers do only
+// for walks of least_size_for_two_halves items or more, like the other
+// helpers. Whether a helper is used follows the rules of Tds_reservation.h:
+// none without threads (CGAL_HAS_THREADS), where the user asks for none
 // (CGAL_PENROSE_NO_HELPER_THREAD), on a machine with one core, or where no
 // thread can be started.
 
@@ -15,6 +15,8 @@
 #define CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_TWO_HALVES_H
 
 #include <CGAL/config.h>
+
+#include <cstddef>
 
 #if defined(CGAL_HAS_THREADS) && !defined(CGAL_PENROSE_NO_HELPER_THREAD)
 #  define CGAL_PENROSE_TWO_HALVES_THREAD 1
@@ -25,6 +27,8 @@
 namespace CGAL {
 namespace internal {
 namespace Penrose {
+
+constexpr std::size_t least_size_for_two_halves = std::size_t(1) << 16;
 
 // Runs `half(0)` on the calling thread and `half(1)` on a helper, if
 // `worth_a_thread` and a helper can be had, and returns once both are done;
