@@ -235,19 +235,21 @@ public:
         for(Index v = 0; v < target.size(); ++v)
           if(!std::isnan(target[v].first)) placed.emplace_back(v, builder->sample(v));
     }
-    for(std::size_t v = 0; v < mesh.points.size(); ++v)
-      if(mesh.vertex_face[v] != Flat_mesh::null) ++stats_.base_vertices;
     const std::size_t n = target.size();
     auto kept = [&](std::size_t v) { return !std::isnan(target[v].first); };
     const std::array<Index, 3> frame = add_frame(mesh, context);
 
     internal::Penrose::Flat_mesh_editor editor(mesh);
     std::vector<Index> stuck;
-    for(std::size_t v = 0; v < n; ++v)
-      if(!kept(v) && mesh.vertex_face[v] != Flat_mesh::null) {
-        if(editor.remove_vertex(Index(v))) ++stats_.removed_vertices;
-        else stuck.push_back(Index(v));
-      }
+    // a removal takes no other vertex out of the mesh: the base vertices are
+    // counted on the way
+    for(std::size_t v = 0; v < n; ++v) {
+      if(mesh.vertex_face[v] == Flat_mesh::null) continue;
+      ++stats_.base_vertices;
+      if(kept(v)) continue;
+      if(editor.remove_vertex(Index(v))) ++stats_.removed_vertices;
+      else stuck.push_back(Index(v));
+    }
     if(!proceed(0.61)) return abandon();
     const std::vector<Index> unplaced = editor.move_vertices(target, stats_.repaired_vertices);
     if(!proceed(0.66)) return abandon();

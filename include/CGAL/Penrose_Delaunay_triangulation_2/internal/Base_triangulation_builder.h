@@ -121,7 +121,8 @@ public:
                       [](const Tile&) {},
                       [this, &next_child](std::size_t k) { create_triangles(k, next_child); });
       if(!completed) return false;
-      for(const Tile& t : frontier_) if(t.face < face_tile_.size()) face_tile_[t.face] = null;
+      if(!next_.empty())  // after the last level, the map is read no more
+        for(const Tile& t : frontier_) if(t.face < face_tile_.size()) face_tile_[t.face] = null;
       tiles_done += frontier_.size();
       frontier_.swap(next_);
     }
