@@ -420,8 +420,9 @@ private:
       }
     // The links and each vertex's face change no container: bound by memory,
     // they take two threads, in halves.
-    auto link_faces = [&m, &fh](std::size_t begin, std::size_t end) {
-      for(std::size_t f = begin; f < end; ++f) {
+    auto link_faces = [&m, &fh](internal::Penrose::Half_range faces) {
+      const std::size_t end = faces.end;
+      for(std::size_t f = faces.begin; f < end; ++f) {
         if(f + ahead < end)
           for(Index g : m.faces[f + ahead].n)
             if(g != Flat_mesh::null) CGAL_PENROSE_PREFETCH(&m.faces[g]);
@@ -431,17 +432,17 @@ private:
           if(const Index g = m.faces[f].n[i]; g != Flat_mesh::null) F->set_neighbor(i, fh(g));
       }
     };
-    auto give_vertices_a_face = [&m, &fh, &vh](std::size_t begin, std::size_t end) {
-      for(std::size_t v = begin; v < end; ++v) {
+    auto give_vertices_a_face = [&m, &fh, &vh](internal::Penrose::Half_range vertices) {
+      const std::size_t end = vertices.end;
+      for(std::size_t v = vertices.begin; v < end; ++v) {
         if(v + ahead < end && m.vertex_face[v + ahead] != Flat_mesh::null)
           CGAL_PENROSE_PREFETCH(&m.faces[m.vertex_face[v + ahead]]);
         if(vh[v] != Vertex_handle()) vh[v]->set_face(fh(m.vertex_face[v]));
       }
     };
-    const std::size_t nf = m.faces.size(), nv = vh.size();
-    internal::Penrose::run_in_two_halves(nv >= internal::Penrose::least_size_for_two_halves, [&](int half) noexcept {
-      link_faces(half * nf / 2, (half + 1) * nf / 2);
-      give_vertices_a_face(half * nv / 2, (half + 1) * nv / 2);
+    internal::Penrose::run_in_two_halves(vh.size() >= internal::Penrose::least_size_for_two_halves, [&](int half) noexcept {
+      link_faces(internal::Penrose::half_of(m.faces.size(), half));
+      give_vertices_a_face(internal::Penrose::half_of(vh.size(), half));
     });
     std::vector<std::pair<Vertex_handle, Face_handle>> hull;  // infinite face (inf, b, a), keyed by b
     for(const auto& [f, i] : boundary) {

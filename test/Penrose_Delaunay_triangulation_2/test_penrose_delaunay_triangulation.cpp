@@ -263,7 +263,7 @@ TEST(Internals, TwoHalvesRunBothHalvesTheSecondOnAHelper)
     EXPECT_EQ(runs[0], 1);
     EXPECT_EQ(runs[1], 1);
     EXPECT_EQ(ran_on[0], std::this_thread::get_id());
-#if defined(CGAL_PENROSE_TWO_HALVES_THREAD)
+#if defined(CGAL_PENROSE_HELPER_THREADS)
     const bool helped = worth_a_thread && std::thread::hardware_concurrency() > 1;
 #else
     const bool helped = false;
@@ -318,7 +318,7 @@ TEST(Internals, TdsReservationHandsOverAnEmptyTdsWithRoom)
     EXPECT_EQ(tds.faces().size(), 0u);
   }
   EXPECT_EQ(small_one.tds().vertices().capacity(), 0u);
-#if defined(CGAL_PENROSE_HELPER_THREAD)
+#if defined(CGAL_PENROSE_HELPER_THREADS)
   const bool reserved = std::thread::hardware_concurrency() > 1;
 #else
   const bool reserved = false;

@@ -82,9 +82,9 @@ public:
     // The moves at once, and the search for folds, read or write each
     // vertex's or face's own data: they take two threads, in halves.
     const bool worth_a_thread = n >= least_size_for_two_halves;
-    const std::size_t nt = target.size();
     run_in_two_halves(worth_a_thread, [&](int half) noexcept {
-      for(std::size_t v = half * nt / 2; v < (half + 1) * nt / 2; ++v)
+      const Half_range vertices = half_of(target.size(), half);
+      for(std::size_t v = vertices.begin; v < vertices.end; ++v)
         if(!std::isnan(target[v].first) && m_.vertex_face[v] != null &&
            (target[v].first != m_.points[v].x() || target[v].second != m_.points[v].y())) {
           trade(Index(v));
@@ -92,10 +92,10 @@ public:
         }
     });
     std::array<std::vector<Index>, 2> folded_in;
-    const Index nf = Index(m_.faces.size());
     run_in_two_halves(worth_a_thread, [&](int half) noexcept {
-      const Index end = Index((half + 1) * std::size_t(nf) / 2);
-      for(Index f = Index(half * std::size_t(nf) / 2); f < end; ++f) {
+      const Half_range faces = half_of(m_.faces.size(), half);
+      const Index end = Index(faces.end);
+      for(Index f = Index(faces.begin); f < end; ++f) {
         if(f + Flat_mesh::fetch_distance < end)
           for(Index u : m_.faces[f + Flat_mesh::fetch_distance].v) CGAL_PENROSE_PREFETCH(&m_.points[u]);
         if(m_.face_alive[f] && !positive(f)) folded_in[half].push_back(f);

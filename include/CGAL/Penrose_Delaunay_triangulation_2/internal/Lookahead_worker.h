@@ -22,16 +22,16 @@
 
 #include <CGAL/config.h>
 
+#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Helper_threads.h>
+
 #include <cstddef>
 #include <exception>
 #include <functional>
 
-#if defined(CGAL_HAS_THREADS) && !defined(CGAL_PENROSE_NO_HELPER_THREAD)
-#  define CGAL_PENROSE_LOOKAHEAD_THREAD 1
+#if defined(CGAL_PENROSE_HELPER_THREADS)
 #  include <atomic>
 #  include <condition_variable>
 #  include <mutex>
-#  include <system_error>
 #  include <thread>
 #  if defined(__linux__)
 #    include <sched.h>
@@ -58,13 +58,8 @@ public:
   // run on more than one core and a thread can be started; running() says.
   explicit Lookahead_worker(bool wanted)
   {
-#if defined(CGAL_PENROSE_LOOKAHEAD_THREAD)
-    if(wanted && more_than_one_core()) {
-      try {
-        helper_ = std::thread([this] { serve(); });
-      } catch(const std::system_error&) {  // no thread to be had: the caller does the jobs
-      }
-    }
+#if defined(CGAL_PENROSE_HELPER_THREADS)
+    if(wanted && more_than_one_core()) helper_ = try_to_start_thread([this] { serve(); });
 #else
     (void)wanted;
 #endif
@@ -75,7 +70,7 @@ public:
 
   ~Lookahead_worker()
   {
-#if defined(CGAL_PENROSE_LOOKAHEAD_THREAD)
+#if defined(CGAL_PENROSE_HELPER_THREADS)
     if(helper_.joinable()) {
       stop_.store(true, std::memory_order_release);
       wake_helper();
@@ -86,7 +81,7 @@ public:
 
   bool running() const
   {
-#if defined(CGAL_PENROSE_LOOKAHEAD_THREAD)
+#if defined(CGAL_PENROSE_HELPER_THREADS)
     return helper_.joinable();
 #else
     return false;
@@ -97,7 +92,7 @@ public:
   // without a helper, does them at once.
   void start(std::size_t n, Job job)
   {
-#if defined(CGAL_PENROSE_LOOKAHEAD_THREAD)
+#if defined(CGAL_PENROSE_HELPER_THREADS)
     if(running()) {
       wait_until_idle();
       hand_over(n, std::move(job));
@@ -110,7 +105,7 @@ public:
   // Waits until item k of the batch is done.
   void wait_for(std::size_t k)
   {
-#if defined(CGAL_PENROSE_LOOKAHEAD_THREAD)
+#if defined(CGAL_PENROSE_HELPER_THREADS)
     if(!running()) return;
     unsigned spins = 0;
     while(seen_ <= k) {
@@ -128,13 +123,13 @@ public:
   // Waits until the whole batch is done.
   void wait_for_all()
   {
-#if defined(CGAL_PENROSE_LOOKAHEAD_THREAD)
+#if defined(CGAL_PENROSE_HELPER_THREADS)
     if(size_ > 0) wait_for(size_ - 1);
 #endif
   }
 
 private:
-#if defined(CGAL_PENROSE_LOOKAHEAD_THREAD)
+#if defined(CGAL_PENROSE_HELPER_THREADS)
   static constexpr std::size_t chunk = 64;
 
   // On one core the two threads' spinning would take turns by time slices.

@@ -29,18 +29,12 @@
 #ifndef CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_TDS_RESERVATION_H
 #define CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_TDS_RESERVATION_H
 
-#include <CGAL/config.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Helper_threads.h>
 
 #include <cstddef>
 #include <new>
 #include <type_traits>
 #include <utility>
-
-#if defined(CGAL_HAS_THREADS) && !defined(CGAL_PENROSE_NO_HELPER_THREAD)
-#  define CGAL_PENROSE_HELPER_THREAD 1
-#  include <system_error>
-#  include <thread>
-#endif
 
 namespace CGAL {
 namespace internal {
@@ -66,17 +60,14 @@ public:
   template <class Release>
   Tds_reservation(std::size_t vertices, std::size_t faces, Release release)
   {
-#if defined(CGAL_PENROSE_HELPER_THREAD)
+#if defined(CGAL_PENROSE_HELPER_THREADS)
     if constexpr(Has_reservable_containers<Tds>::value)
       if(vertices >= least_vertices && std::thread::hardware_concurrency() > 1) {
-        try {
-          helper_ = std::thread([this, vertices, faces, release]() mutable {
-            release();
-            reserve(vertices, faces);
-          });
-          return;
-        } catch(const std::system_error&) {  // no thread to be had: no reservation
-        }
+        helper_ = try_to_start_thread([this, vertices, faces, release]() mutable {
+          release();
+          reserve(vertices, faces);
+        });
+        if(helper_.joinable()) return;  // otherwise no reservation
       }
 #else
     (void)vertices; (void)faces;
@@ -112,13 +103,13 @@ private:
 
   void wait()
   {
-#if defined(CGAL_PENROSE_HELPER_THREAD)
+#if defined(CGAL_PENROSE_HELPER_THREADS)
     if(helper_.joinable()) helper_.join();
 #endif
   }
 
   Tds tds_;
-#if defined(CGAL_PENROSE_HELPER_THREAD)
+#if defined(CGAL_PENROSE_HELPER_THREADS)
   std::thread helper_;
 #endif
 };
