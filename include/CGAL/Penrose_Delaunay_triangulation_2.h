@@ -440,7 +440,7 @@ private:
         if(vh[v] != Vertex_handle()) vh[v]->set_face(fh(m.vertex_face[v]));
       }
     };
-    internal::Penrose::run_in_two_halves(vh.size() >= internal::Penrose::least_size_for_two_halves, [&](int half) noexcept {
+    internal::Penrose::run_in_two_halves(vh.size() >= internal::Penrose::least_size_for_two_halves, [&](int half) {
       link_faces(internal::Penrose::half_of(m.faces.size(), half));
       give_vertices_a_face(internal::Penrose::half_of(vh.size(), half));
     });

@@ -82,7 +82,7 @@ public:
     // The moves at once, and the search for folds, read or write each
     // vertex's or face's own data: they take two threads, in halves.
     const bool worth_a_thread = n >= least_size_for_two_halves;
-    run_in_two_halves(worth_a_thread, [&](int half) noexcept {
+    run_in_two_halves(worth_a_thread, [&](int half) {
       const Half_range vertices = half_of(target.size(), half);
       for(std::size_t v = vertices.begin; v < vertices.end; ++v)
         if(!std::isnan(target[v].first) && m_.vertex_face[v] != null &&
@@ -92,7 +92,7 @@ public:
         }
     });
     std::array<std::vector<Index>, 2> folded_in;
-    run_in_two_halves(worth_a_thread, [&](int half) noexcept {
+    run_in_two_halves(worth_a_thread, [&](int half) {
       const Half_range faces = half_of(m_.faces.size(), half);
       const Index end = Index(faces.end);
       for(Index f = Index(faces.begin); f < end; ++f) {

@@ -15,6 +15,7 @@
 #include <CGAL/Penrose_Delaunay_triangulation_2/internal/Helper_threads.h>
 
 #include <cstddef>
+#include <exception>
 
 namespace CGAL {
 namespace internal {
@@ -32,16 +33,30 @@ inline Half_range half_of(std::size_t n, int half) { return {std::size_t(half) *
 
 // Runs `half(0)` on the calling thread and `half(1)` on a helper, if
 // `worth_a_thread` and a helper can be had, and returns once both are done;
-// otherwise runs both on the calling thread. `half` must not throw.
+// otherwise runs both on the calling thread. What a half throws (the first
+// half's exception where both throw) is rethrown once both have ended.
 template <class Half>
 void run_in_two_halves(bool worth_a_thread, const Half& half)
 {
 #if defined(CGAL_PENROSE_HELPER_THREADS)
   if(worth_a_thread && std::thread::hardware_concurrency() > 1) {
-    std::thread helper = try_to_start_thread([&half] { half(1); });
+    std::exception_ptr helper_failed;
+    std::thread helper = try_to_start_thread([&half, &helper_failed] {
+      try {
+        half(1);
+      } catch(...) {
+        helper_failed = std::current_exception();
+      }
+    });
     if(helper.joinable()) {
-      half(0);
+      try {
+        half(0);
+      } catch(...) {
+        helper.join();
+        throw;
+      }
       helper.join();
+      if(helper_failed) std::rethrow_exception(helper_failed);
       return;
     }
   }
