@@ -79,13 +79,15 @@ On a machine with more than one core, a construction of at least
 - during step 3, one that moves half of the samples, then looks for folded
   triangles among half of the faces;
 - during step 4, one that frees the arrays that served step 1 alone, then
-  reserves the TDS's storage: most of the cost of writing a TDS is the
-  first touch of its memory;
-- while the TDS is written, one that links half of its faces and gives half
-  of its vertices their face.
+  reserves the storage of the TDS's vertices and creates its faces, empty
+  (default-constructed): most of the cost of writing a TDS is the first
+  touch of its memory;
+- while the TDS is written, one that gives half of its faces their vertices,
+  then links them, and gives half of its vertices their face.
 
-The helpers create no vertex or face and call neither the traits nor the
-lift, and they have ended when the constructor or `build()` returns or
+The helpers create no vertex and call neither the traits nor the lift; the
+faces' default constructor is the only code of the TDS that runs on a
+helper. They have ended when the constructor or `build()` returns or
 throws; what the density throws in the helper is rethrown to the caller.
 The triangulation is the same either way. Define
 `CGAL_PENROSE_NO_HELPER_THREAD` (or CGAL's `CGAL_HAS_NO_THREADS`) to do
@@ -259,16 +261,15 @@ public:
     for(Index v : unplaced) unplaced_target.push_back(target[v]);
     decltype(target)().swap(target);
     // the TDS will have at most `live` finite vertices and the infinite one,
-    // and twice as many faces as vertices, less four
+    // and a face for each flat one
     const std::size_t live = stats_.base_vertices + frame.size() - stats_.removed_vertices;
     // blocks kept from an earlier construction and not taken by this one would add to its peak
     internal::Penrose::release_kept_blocks();
-    internal::Penrose::Tds_reservation<Triangulation_data_structure> reservation(live + 1, 2 * live - 2,
-                                                                                [&builder] { builder.reset(); });
+    Reservation reservation(live + 1, mesh.number_of_faces(), [&builder] { builder.reset(); });
     stats_.flips = internal::Penrose::make_delaunay(mesh);
     if(!proceed(0.84)) return abandon();
 
-    auto handle = write_tds(mesh, lift, reservation.tds());
+    auto handle = write_tds(mesh, lift, reservation, frame[0]);
     mesh = Flat_mesh();
     if(!proceed(0.99)) return abandon();
     for(Index v : stuck) this->remove(handle[v]);
@@ -372,16 +373,21 @@ private:
     m.link(h, 0, after, 0);
   }
 
-  // Writes the flat mesh into `fresh`, an empty TDS, which then becomes this
+  typedef internal::Penrose::Tds_reservation<Triangulation_data_structure> Reservation;
+
+  // Writes the flat mesh, a disk whose boundary passes through its vertex
+  // `on_boundary`, into the TDS of `reservation`, which then becomes this
   // triangulation's; the mesh's coordinates are released as soon as the TDS
   // vertices hold them.
   template <class Lift>
-  internal::Penrose::Large_vector<Vertex_handle> write_tds(Flat_mesh& m, const Lift& lift,
-                                                           Triangulation_data_structure& fresh)
+  internal::Penrose::Large_vector<Vertex_handle> write_tds(Flat_mesh& m, const Lift& lift, Reservation& reservation,
+                                                           Index on_boundary)
   {
     constexpr std::size_t ahead = Flat_mesh::fetch_distance;
+    const bool prepared = reservation.prepared();
+    const typename Reservation::Face_iterator middle = reservation.middle_face();
     Triangulation_data_structure& tds = this->tds();
-    tds.swap(fresh);
+    tds.swap(reservation.tds());
     const Vertex_handle infinite = tds.create_vertex();
     this->set_infinite_vertex(infinite);
     tds.set_dimension(2);
@@ -392,9 +398,17 @@ private:
         vh[v]->set_point(lift(m.points[v].x(), m.points[v].y()));
       }
     decltype(m.points)().swap(m.points);
+    // the edges without a face across, counter-clockwise, found while the
+    // flat faces still hold their vertices
+    std::vector<std::pair<Index, int>> boundary;
+    Index next = on_boundary;
+    do {
+      boundary.push_back(boundary_edge_from(m, next));
+      next = m.faces[boundary.back().first].v[Flat_mesh::cw(boundary.back().second)];
+    } while(next != on_boundary);
     // The TDS face of each flat face. The flat face's vertex slots are dead
-    // once that exists: they hold its handle where it fits, so that no array
-    // of handles is added at the peak of the construction.
+    // once that has its vertices: they hold its handle where it fits, so that
+    // no array of handles is added at the peak of the construction.
     constexpr bool in_place = std::is_trivially_copyable<Face_handle>::value &&
                               sizeof(Face_handle) <= sizeof(Flat_mesh::Face::v);
     std::vector<Face_handle> side(in_place ? 0 : m.faces.size());
@@ -408,16 +422,37 @@ private:
       else h = side[f];
       return h;
     };
-    std::vector<std::pair<Index, int>> boundary;  // edges without a face across
-    for(std::size_t f = 0; f < m.faces.size(); ++f)
-      if(m.face_alive[f]) {
-        if(f + ahead < m.faces.size())
+    // Gives the live flat faces from `begin` to `end` in order the TDS faces
+    // that `take(a, b, c)` returns with the vertices a, b, c.
+    auto write_faces = [&](std::size_t begin, std::size_t end, auto take) {
+      for(std::size_t f = begin; f < end; ++f) {
+        if(f + ahead < end)
           for(Index v : m.faces[f + ahead].v) CGAL_PENROSE_PREFETCH(&vh[v]);
+        if(!m.face_alive[f]) continue;
         const auto& F = m.faces[f];
-        for(int i = 0; i < 3; ++i)
-          if(F.n[i] == Flat_mesh::null) boundary.emplace_back(Index(f), i);
-        keep_handle(f, tds.create_face(vh[F.v[0]], vh[F.v[1]], vh[F.v[2]]));
+        keep_handle(f, take(vh[F.v[0]], vh[F.v[1]], vh[F.v[2]]));
       }
+    };
+    if(prepared) {
+      CGAL_assertion(tds.faces().size() == m.number_of_faces());
+      // as many live flat faces before `half_way` as TDS faces before `middle`
+      std::size_t half_way = 0;
+      for(std::size_t before = 0, half = m.number_of_faces() / 2; before < half; ++half_way)
+        before += std::size_t(m.face_alive[half_way]);
+      internal::Penrose::run_in_two_halves(true, [&](int half) {
+        Face_handle next = half == 0 ? tds.faces().begin() : middle;
+        auto take = [&next](Vertex_handle a, Vertex_handle b, Vertex_handle c) {
+          next->set_vertices(a, b, c);
+          return next++;
+        };
+        if(half == 0) write_faces(0, half_way, take);
+        else write_faces(half_way, m.faces.size(), take);
+        CGAL_assertion(next == (half == 0 ? middle : tds.faces().end()));
+      });
+    } else {
+      write_faces(0, m.faces.size(),
+                  [&tds](Vertex_handle a, Vertex_handle b, Vertex_handle c) { return tds.create_face(a, b, c); });
+    }
     // The links and each vertex's face change no container: bound by memory,
     // they take two threads, in halves.
     auto link_faces = [&m, &fh](internal::Penrose::Half_range faces) {

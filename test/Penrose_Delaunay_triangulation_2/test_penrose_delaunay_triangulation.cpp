@@ -305,26 +305,35 @@ TEST(Triangulation, BadDensityFoundByTheHelperThrowsAsWithout)
   EXPECT_TRUE(edge_set(pdt, xy_of) == edge_set(dt, xy_of));
 }
 
-TEST(Internals, TdsReservationHandsOverAnEmptyTdsWithRoom)
+TEST(Internals, TdsReservationReleasesThenMakesTheFacesOnAHelper)
 {
   typedef CGAL::Penrose_Delaunay_triangulation_2<Epick>::Triangulation_data_structure Tds;
   typedef CGAL::internal::Penrose::Tds_reservation<Tds> Reservation;
   const std::size_t large = Reservation::least_vertices, small = large - 1;
-  Reservation small_one(small, 2 * small - 2), large_one(large, 2 * large - 2);
-  for(Reservation* reservation : {&small_one, &large_one}) {
-    const Tds& tds = reservation->tds();
-    EXPECT_EQ(tds.dimension(), -2);
-    EXPECT_EQ(tds.number_of_vertices(), 0u);
-    EXPECT_EQ(tds.faces().size(), 0u);
-  }
-  EXPECT_EQ(small_one.tds().vertices().capacity(), 0u);
 #if defined(CGAL_PENROSE_HELPER_THREADS)
-  const bool reserved = std::thread::hardware_concurrency() > 1;
+  const bool helped = std::thread::hardware_concurrency() > 1;
 #else
-  const bool reserved = false;
+  const bool helped = false;
 #endif
-  EXPECT_EQ(large_one.tds().vertices().capacity() >= large, reserved);
-  EXPECT_EQ(large_one.tds().faces().capacity() >= 2 * large - 2, reserved);
+  for(const std::size_t n : {small, large}) {
+    const std::size_t faces = 2 * n - 3;  // odd: the first half is the shorter
+    std::thread::id released_on;
+    Reservation reservation(n, faces, [&released_on] { released_on = std::this_thread::get_id(); });
+    const bool prepared = reservation.prepared();
+    const Reservation::Face_iterator middle = reservation.middle_face();
+    const Tds& tds = reservation.tds();
+    EXPECT_EQ(prepared, helped && n == large) << n;
+    // the release always runs, on the helper where there is one
+    EXPECT_EQ(released_on == std::this_thread::get_id(), !prepared);
+    EXPECT_EQ(tds.number_of_vertices(), 0u);
+    EXPECT_EQ(tds.vertices().capacity() >= n, prepared);
+    EXPECT_EQ(tds.faces().size(), prepared ? faces : 0u);
+    if(prepared) {
+      EXPECT_EQ(std::size_t(std::distance(tds.faces().begin(), Tds::Face_iterator(middle))), faces / 2);
+      for(auto f = tds.faces().begin(); f != tds.faces().end(); ++f)
+        EXPECT_EQ(f->vertex(0), Tds::Vertex_handle());
+    }
+  }
 }
 
 TEST(Internals, FastPredicatesNeverContradictEpick)

@@ -58,6 +58,9 @@ public:
   Large_vector<Face> faces;
   Large_vector<char> face_alive;
 
+  // the faces alive
+  std::size_t number_of_faces() const { return faces.size() - free_.size(); }
+
   Index add_vertex(double px, double py)
   {
     points.emplace_back(px, py); vertex_face.push_back(null);

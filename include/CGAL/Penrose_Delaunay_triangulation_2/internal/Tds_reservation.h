@@ -1,15 +1,17 @@
 // Copyright (c) 2026 The Penrose_Delaunay_triangulation_2 authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// A fresh TDS whose storage is reserved on a helper thread while the
-// construction finishes its flat mesh. Most of the cost of writing a TDS is
-// the first touch of its storage: page faults, and the free list that
-// Compact_container threads through every new block. Creating 10^6 vertices
-// and 2 x 10^6 faces in a fresh TDS takes about 53 ms here, 15 ms once their
-// storage is reserved. Reserved on a second core, that cost overlaps with
-// the Lawson flips, which touch nothing of the TDS. (Where the process
-// reuses memory that an earlier TDS freed, there are no page faults and
-// little to gain.)
+// A fresh TDS whose vertex storage is reserved, and whose faces are created
+// empty, on a helper thread while the construction finishes its flat mesh.
+// Most of the cost of writing a TDS is the first touch of its storage: page
+// faults, and the free list that Compact_container threads through every
+// new block. Creating 10^6 vertices and 2 x 10^6 faces in a fresh TDS takes
+// about 53 ms here, 15 ms once their storage is reserved. On a second core,
+// that cost overlaps with the Lawson flips, which touch nothing of the TDS.
+// The faces can be made there, not only reserved, since the flips change
+// their number no more than their storage: the calling thread then gives
+// them their vertices and neighbours, in two halves of the faces' container
+// on two threads, where creating them would have to be done by one.
 //
 // Before it reserves, the helper runs a job that frees memory the
 // construction no longer needs (unmapping 10^6 points' worth of the base
@@ -17,14 +19,14 @@
 // before the reservation touches any, and the peak is the same as if the
 // calling thread had freed it.
 //
-// The reservation is skipped (the TDS is simply empty) below
+// Nothing is prepared (the TDS is empty, and prepared() false) below
 // `least_vertices`, where starting a thread costs more than it saves (at
 // 10^3 points a construction took 12% longer with it, at 3 x 10^4 2% longer,
 // at 10^5 6 to 35% shorter); without threads (CGAL_HAS_NO_THREADS), or where
-// the user asks for none (CGAL_PENROSE_NO_HELPER_THREAD); on a
-// machine with one core; where no thread can be started; for a TDS whose
-// containers have no reserve(); and if the reservation runs out of memory.
-// Writing the TDS then allocates as it goes, and fails there if it must.
+// the user asks for none (CGAL_PENROSE_NO_HELPER_THREAD); on a machine with
+// one core; where no thread can be started; for a TDS whose vertex container
+// has no reserve(); and if the helper runs out of memory. The caller then
+// creates what it needs itself, and fails there if it must.
 
 #ifndef CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_TDS_RESERVATION_H
 #define CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_TDS_RESERVATION_H
@@ -32,6 +34,7 @@
 #include <CGAL/Penrose_Delaunay_triangulation_2/internal/Helper_threads.h>
 
 #include <cstddef>
+#include <iterator>
 #include <new>
 #include <type_traits>
 #include <utility>
@@ -41,33 +44,35 @@ namespace internal {
 namespace Penrose {
 
 template <class Tds, class = void>
-struct Has_reservable_containers : std::false_type {};
+struct Has_reservable_vertices : std::false_type {};
 
 template <class Tds>
-struct Has_reservable_containers<Tds, std::void_t<decltype(std::declval<Tds&>().vertices().reserve(std::size_t())),
-                                                  decltype(std::declval<Tds&>().faces().reserve(std::size_t()))>>
+struct Has_reservable_vertices<Tds, std::void_t<decltype(std::declval<Tds&>().vertices().reserve(std::size_t()))>>
   : std::true_type {};
 
 template <class Tds>
 class Tds_reservation
 {
 public:
+  typedef typename Tds::Face_iterator Face_iterator;
+
   static constexpr std::size_t least_vertices = std::size_t(1) << 16;
 
-  // Starts reserving room for `vertices` vertices and `faces` faces, after
-  // `release()`, which must not throw. Without a helper, `release()` runs
+  // Starts, on a helper, `release()`, which must not throw, then the
+  // reservation of room for `vertices` vertices and the creation of `faces`
+  // faces, default-constructed. Without a helper, only `release()` runs,
   // here.
   template <class Release>
   Tds_reservation(std::size_t vertices, std::size_t faces, Release release)
   {
 #if defined(CGAL_PENROSE_HELPER_THREADS)
-    if constexpr(Has_reservable_containers<Tds>::value)
+    if constexpr(Has_reservable_vertices<Tds>::value)
       if(vertices >= least_vertices && std::thread::hardware_concurrency() > 1) {
         helper_ = try_to_start_thread([this, vertices, faces, release]() mutable {
           release();
-          reserve(vertices, faces);
+          prepare(vertices, faces);
         });
-        if(helper_.joinable()) return;  // otherwise no reservation
+        if(helper_.joinable()) return;  // otherwise nothing prepared
       }
 #else
     (void)vertices; (void)faces;
@@ -75,14 +80,19 @@ public:
     release();
   }
 
-  Tds_reservation(std::size_t vertices, std::size_t faces) : Tds_reservation(vertices, faces, [] {}) {}
-
   Tds_reservation(const Tds_reservation&) = delete;
   Tds_reservation& operator=(const Tds_reservation&) = delete;
 
   ~Tds_reservation() { wait(); }
 
-  // The TDS, empty, with its storage reserved if it could be; waits for the
+  // Whether the helper made the faces; waits for it.
+  bool prepared()
+  {
+    wait();
+    return prepared_;
+  }
+
+  // Where prepared(), the TDS with its faces, otherwise empty; waits for the
   // helper. To be taken once.
   Tds& tds()
   {
@@ -90,13 +100,23 @@ public:
     return tds_;
   }
 
+  // Where prepared(), the first face of the second half of the faces, in
+  // the order of the faces' container: `faces / 2` faces come before it.
+  Face_iterator middle_face()
+  {
+    wait();
+    return middle_;
+  }
+
 private:
-  void reserve(std::size_t vertices, std::size_t faces)
+  void prepare(std::size_t vertices, std::size_t faces)
   {
     try {
       tds_.vertices().reserve(vertices);
-      tds_.faces().reserve(faces);
-    } catch(const std::bad_alloc&) {
+      for(std::size_t f = 0; f < faces; ++f) tds_.create_face();
+      middle_ = std::next(tds_.faces().begin(), std::ptrdiff_t(faces / 2));
+      prepared_ = true;
+    } catch(const std::bad_alloc&) {  // the caller will create them, or fail
       tds_.clear();
     }
   }
@@ -109,6 +129,8 @@ private:
   }
 
   Tds tds_;
+  Face_iterator middle_;
+  bool prepared_ = false;
 #if defined(CGAL_PENROSE_HELPER_THREADS)
   std::thread helper_;
 #endif
