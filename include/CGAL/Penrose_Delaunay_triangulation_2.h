@@ -242,16 +242,13 @@ public:
     const std::array<Index, 3> frame = add_frame(mesh, context);
 
     internal::Penrose::Flat_mesh_editor editor(mesh);
-    std::vector<Index> stuck;
-    // a removal takes no other vertex out of the mesh: the base vertices are
-    // counted on the way
-    for(std::size_t v = 0; v < n; ++v) {
-      if(mesh.vertex_face[v] == Flat_mesh::null) continue;
-      ++stats_.base_vertices;
-      if(kept(v)) continue;
-      if(editor.remove_vertex(Index(v))) ++stats_.removed_vertices;
-      else stuck.push_back(Index(v));
-    }
+    std::vector<Index> inactive;
+    for(std::size_t v = 0; v < n; ++v)
+      if(mesh.vertex_face[v] != Flat_mesh::null) {
+        ++stats_.base_vertices;
+        if(!kept(v)) inactive.push_back(Index(v));
+      }
+    const std::vector<Index> stuck = editor.remove_vertices(inactive, stats_.removed_vertices);
     if(!proceed(0.61)) return abandon();
     const std::vector<Index> unplaced = editor.move_vertices(target, stats_.repaired_vertices);
     if(!proceed(0.66)) return abandon();

@@ -42,6 +42,34 @@ public:
     return true;
   }
 
+  // Removes the interior vertices `doomed`, in order, and returns those
+  // that remove_vertex() refused; `removed` counts the others. They are
+  // sparse in memory, so that each removal would begin with a chain of cache
+  // misses: what the next ones read first is fetched some removals ahead,
+  // in steps (the vertex's face, then that face, then its neighbours and
+  // vertices).
+  std::vector<Index> remove_vertices(const std::vector<Index>& doomed, std::size_t& removed)
+  {
+    std::vector<Index> refused;
+    const std::size_t n = doomed.size();
+    for(std::size_t k = 0; k < n; ++k) {
+      if(k + 12 < n) CGAL_PENROSE_PREFETCH(&m_.vertex_face[doomed[k + 12]]);
+      if(k + 8 < n) {
+        CGAL_PENROSE_PREFETCH(&m_.points[doomed[k + 8]]);
+        if(const Index f = m_.vertex_face[doomed[k + 8]]; f != null) CGAL_PENROSE_PREFETCH(&m_.faces[f]);
+      }
+      if(k + 4 < n)
+        if(const Index f = m_.vertex_face[doomed[k + 4]]; f != null)
+          for(int i = 0; i < 3; ++i) {
+            CGAL_PENROSE_PREFETCH(&m_.points[m_.faces[f].v[i]]);
+            if(const Index g = m_.faces[f].n[i]; g != null) CGAL_PENROSE_PREFETCH(&m_.faces[g]);
+          }
+      if(remove_vertex(doomed[k])) ++removed;
+      else refused.push_back(doomed[k]);
+    }
+    return refused;
+  }
+
   // Moves vertex v to (px, py). Returns false if the point cannot be placed
   // (it coincides with another vertex, or lies outside the mesh); v is then
   // removed from the mesh.
