@@ -40,7 +40,9 @@ public:
   typedef Exact_predicates_inexact_constructions_kernel::Point_2 Point;
   static constexpr Index null = 0xffffffffu;
   // how many elements ahead a walk in memory order fetches what it will read
-  static constexpr Index fetch_distance = 16;
+  // (at 10^6 points, 32 took the steps after the base mesh 3.6 ms less than 16,
+  // mostly in writing the TDS; 24 and 48 did about as well as 32)
+  static constexpr Index fetch_distance = 32;
 
   struct Face
   {
