@@ -25,8 +25,9 @@
 // at 10^5 6 to 35% shorter); without threads (CGAL_HAS_NO_THREADS), or where
 // the user asks for none (CGAL_PENROSE_NO_HELPER_THREAD); on a machine with
 // one core; where no thread can be started; for a TDS whose vertex container
-// has no reserve(); and if the helper runs out of memory. The caller then
-// creates what it needs itself, and fails there if it must.
+// has no reserve(); and if the helper runs out of memory, or a face's
+// default constructor throws. The caller then creates what it needs itself,
+// and fails there if it must.
 
 #ifndef CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_TDS_RESERVATION_H
 #define CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_TDS_RESERVATION_H
@@ -35,7 +36,6 @@
 
 #include <cstddef>
 #include <iterator>
-#include <new>
 #include <type_traits>
 #include <utility>
 
@@ -116,7 +116,7 @@ private:
       for(std::size_t f = 0; f < faces; ++f) tds_.create_face();
       middle_ = std::next(tds_.faces().begin(), std::ptrdiff_t(faces / 2));
       prepared_ = true;
-    } catch(const std::bad_alloc&) {  // the caller will create them, or fail
+    } catch(...) {  // out of memory, or a face's constructor threw: the caller will create them, or fail
       tds_.clear();
     }
   }
