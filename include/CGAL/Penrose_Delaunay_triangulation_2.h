@@ -301,8 +301,9 @@ public:
 
 private:
   // The peak of a construction: the flat mesh (about 100 bytes per point at
-  // the peak, which is while the mesh is made Delaunay and the TDS's storage
-  // is reserved beside it) and the TDS itself, with two faces per vertex.
+  // the peak, which is while the mesh is made Delaunay and the TDS's vertices
+  // are reserved and its faces made beside it) and the TDS itself, with two
+  // faces per vertex.
   static double peak_bytes_per_point()
   {
     typedef typename Triangulation_data_structure::Vertex Vertex;
