@@ -193,9 +193,7 @@ private:
       } else {
         const Vertex& a = vertices_[v[nv.near_corner]];
         const Vertex& b = vertices_[v[nv.far_corner]];
-        const double x = a.x + split_fraction * (b.x - a.x);
-        const double y = a.y + split_fraction * (b.y - a.y);
-        v[3 + k] = add_vertex(x, y);
+        v[3 + k] = add_vertex(split_coordinate(a.x, b.x), split_coordinate(a.y, b.y));
       }
       if(nv.is_sample) {
         Vertex& s = vertices_[v[3 + k]];

@@ -15,6 +15,13 @@
 // the second. Only the tiles that are still to be subdivided are held, so
 // memory follows the mesh, not the tree.
 //
+// The faces of a level's tiles are consecutive, in the order of the tiles:
+// the face across an edge is a tile's, and which one, by a subtraction, and
+// the walks over the tiles read their faces in memory order. A tile's
+// triangles that are no such face take its own face first; where every one
+// is, its face is taken over by the triangles of the next level, in order,
+// before new faces are appended, so that no face stays empty.
+//
 // What each tile's subdivision decides from the importance field alone (its
 // survey) is apart from the mesh: a helper thread, where there is one,
 // surveys a level's tiles ahead of the thread that builds the mesh.
@@ -80,7 +87,7 @@ public:
     m_.points.reserve(n); m_.vertex_face.reserve(n);
     importance_.reserve(n); target_.reserve(n);
     if(record_births_) birth_.reserve(n);
-    m_.faces.reserve(2 * n); m_.face_alive.reserve(2 * n); face_tile_.reserve(2 * n);
+    m_.faces.reserve(2 * n); m_.face_alive.reserve(2 * n);
     // Two consecutive levels' tiles take turns in two blocks, reserved once
     // (untouched pages cost nothing): a level's children are written over its
     // grandparents, in pages already faulted in.
@@ -89,7 +96,8 @@ public:
     const bool surveyed_ahead = helper.running();
     if(surveyed_ahead) surveys_.reserve(n);
     for(int i = 0; i < 3; ++i) add_vertex(c_.root_x(i), c_.root_y(i), c_.importance(c_.root_x(i), c_.root_y(i)));
-    const Tile root(0, 0, FAT_F, 15, {{0, 1, 2}}, m_.create_face(0, 1, 2));
+    frontier_base_ = m_.create_face(0, 1, 2);
+    const Tile root(0, 0, FAT_F, 15, {{0, 1, 2}});
     double rx[3], ry[3];
     for(int i = 0; i < 3; ++i) { rx[i] = m_.points[i].x(); ry[i] = m_.points[i].y(); }
     if(c_.should_refine(0, 0, rx, ry, importance_.data())) frontier_.push_back(root);
@@ -99,9 +107,6 @@ public:
     std::size_t tiles_done = 0;
     auto report = [&](double tiles) { return !progress || progress((std::min)(0.99, tiles / expected_tiles)); };
     for(int level = 0; !frontier_.empty(); ++level) {
-      // the frontier's faces all exist before the level starts
-      face_tile_.resize(m_.faces.size(), null);
-      for(std::size_t k = 0; k < frontier_.size(); ++k) face_tile_[frontier_[k].face] = Index(k);
       work_.assign(frontier_.size(), Work());
       next_.clear();
       const double done = double(tiles_done), half = 0.5 * double(frontier_.size());
@@ -117,21 +122,28 @@ public:
                       }) &&
         // the next level's tiles are all known: surveyed while this level's triangles are linked
         (!surveyed_ahead || start_surveys(helper, next_, level + 1)) &&
+        (next_base_ = m_.append_faces(next_.size()), true) &&
         for_each_tile([&](std::size_t k) { return report(done + half + 0.5 * k); },
                       [](const Tile&) {},
                       [this, &next_child](std::size_t k) { create_triangles(k, next_child); });
       if(!completed) return false;
-      if(!next_.empty())  // after the last level, the map is read no more
-        for(const Tile& t : frontier_) if(t.face < face_tile_.size()) face_tile_[t.face] = null;
       tiles_done += frontier_.size();
       frontier_.swap(next_);
+      frontier_base_ = next_base_;
+      // the faces given up at this level are taken over at the next one
+      recycled_.erase(recycled_.begin(), recycled_.begin() + std::ptrdiff_t(next_recycled_));
+      recycled_.insert(recycled_.end(), given_up_.begin(), given_up_.end());
+      given_up_.clear();
+      next_recycled_ = 0;
     }
+    for(std::size_t i = next_recycled_; i < recycled_.size(); ++i) m_.delete_face(recycled_[i]);
     return true;
   }
 
 private:
-  // A tile that is to be subdivided. Packed in 32 bytes: every level writes
-  // its children and walks its frontier twice, which costs by the byte.
+  // A tile that is to be subdivided; its face is implied (see face_of()).
+  // Packed in 32 bytes: every level writes its children and walks its
+  // frontier twice, which costs by the byte.
   struct Tile
   {
     Tile() = default;
@@ -139,9 +151,9 @@ private:
     // copied would be reloaded in wider words than it was stored in, and
     // such loads wait for the stores to retire
     Tile(std::uint64_t code, std::uint64_t threshold, Tile_type type, std::uint8_t direction,
-         const std::array<Index, 3>& corners, Index face)
+         const std::array<Index, 3>& corners)
       : code(code), threshold(threshold), type(type), direction(direction), refined_children(0), unused(0),
-        corners(corners), face(face)
+        corners(corners)
     {}
 
     std::uint64_t code;
@@ -151,7 +163,6 @@ private:
     std::uint64_t refined_children : 3;  // bit c: child c is in the next frontier
     std::uint64_t unused : 2;            // set, so that the word is stored whole, not merged into memory
     std::array<Index, 3> corners;
-    Index face;
 
     Tile_type tile_type() const { return static_cast<Tile_type>(type); }
     std::uint8_t tile_direction() const { return static_cast<std::uint8_t>(direction); }
@@ -172,13 +183,16 @@ private:
   static int slot(int edge) { return edge == 0 ? 0 : 1; }
 
   // What the subdivision of a tile decides from the importance field alone,
-  // apart from the mesh: where its new vertices are, whether its sample is
-  // kept and where it goes, and which children are subdivided further.
+  // apart from the mesh: the importance at its new vertices, whether its
+  // sample is kept and where it goes, and which children are subdivided
+  // further. Not where the new vertices are: recomputed where they enter the
+  // mesh, they spare the helper, which the last levels wait for, 32 bytes of
+  // fresh memory per tile.
   struct Survey
   {
     Survey() {}  // left as it is: the helper writes every survey before it is read
 
-    std::array<double, 2> x, y, importance;  // of new vertex n
+    std::array<double, 2> importance;        // at new vertex n
     double target_x, target_y;               // of the sample, if kept
     bool kept;
     std::uint8_t refined_children;           // bit c: child c
@@ -228,8 +242,8 @@ private:
     for(int n = 0; n < r.number_of_new_vertices; ++n) {
       const New_vertex_rule& nv = r.new_vertices[n];
       const int a = nv.near_corner, b = nv.far_corner;
-      s.x[n] = vx[3 + n] = vx[a] + split_fraction * (vx[b] - vx[a]);
-      s.y[n] = vy[3 + n] = vy[a] + split_fraction * (vy[b] - vy[a]);
+      vx[3 + n] = split_coordinate(vx[a], vx[b]);
+      vy[3 + n] = split_coordinate(vy[a], vy[b]);
       s.importance[n] = vi[3 + n] = c_.importance(vx[3 + n], vy[3 + n]);
       Placed_sample p;
       if(nv.is_sample && c_.activate(vx[3 + n], vy[3 + n], vi[3 + n], sample_birth(t, r, child_level), p)
@@ -273,14 +287,11 @@ private:
       if(k % progress_period == 0 && !proceed(k)) return false;
       if(k + 2 * ahead < n) {
         fetch(frontier_[k + 2 * ahead]);
-        CGAL_PENROSE_PREFETCH(&m_.faces[frontier_[k + 2 * ahead].face]);
+        CGAL_PENROSE_PREFETCH(&m_.faces[face_of(k + 2 * ahead)]);
       }
       if(k + ahead < n)
-        for(Index g : m_.faces[frontier_[k + ahead].face].n)
-          if(g != null) {
-            CGAL_PENROSE_PREFETCH(&m_.faces[g]);
-            if(g < face_tile_.size()) CGAL_PENROSE_PREFETCH(&face_tile_[g]);
-          }
+        for(Index g : m_.faces[face_of(k + ahead)].n)
+          if(g != null) CGAL_PENROSE_PREFETCH(&m_.faces[g]);
       step(k);
     }
     return true;
@@ -301,10 +312,23 @@ private:
     return v;
   }
 
+  // The face of tile k of the frontier.
+  Index face_of(std::size_t k) const { return frontier_base_ + Index(k); }
+
   // The tile still to be subdivided whose face is g, or null.
   Index tile_of_face(Index g) const
   {
-    return (g == null || g >= face_tile_.size()) ? null : face_tile_[g];
+    return (g != null && g >= frontier_base_ && g - frontier_base_ < frontier_.size()) ? g - frontier_base_ : null;
+  }
+
+  // A face for a triangle that is no tile's: one given up at the level
+  // before, or a new one.
+  Index create_face(Index a, Index b, Index c)
+  {
+    if(next_recycled_ == recycled_.size()) return m_.create_face(a, b, c);
+    const Index f = recycled_[next_recycled_++];
+    m_.reset_face(f, a, b, c);
+    return f;
   }
 
   // Phase 1: the samples born on the new vertices, and the children that
@@ -324,7 +348,7 @@ private:
       const New_vertex_rule& nv = r.new_vertices[n];
       Index& x = w.new_vertices[slot(nv.edge)];
       if(nv.is_sample && s.kept) {
-        if(x == null) add_new_vertex(k, nv.edge, s.x[n], s.y[n], s.importance[n], helper);
+        if(x == null) add_new_vertex(k, n, s.importance[n], helper);
         target_[x] = {s.target_x, s.target_y};
         if(record_births_) birth_[x] = sample_birth(t, r, child_level);
       }
@@ -336,29 +360,32 @@ private:
       std::array<Index, 3> corners;
       for(int i = 0; i < 3; ++i) {
         const int j = cr.corners[i];
-        if(v[j] == null)
-          v[j] = add_new_vertex(k, r.new_vertices[j - 3].edge, s.x[j - 3], s.y[j - 3], s.importance[j - 3], helper);
+        if(v[j] == null) v[j] = add_new_vertex(k, j - 3, s.importance[j - 3], helper);
         corners[i] = v[j];
       }
       next_.emplace_back(t.code * 4 + cr.code_pair, child_threshold(t, cr, child_level), cr.type,
-                         add_direction(t.tile_direction(), cr.direction_step), corners, null);
+                         add_direction(t.tile_direction(), cr.direction_step), corners);
     }
     // written once the tile is read no more: a byte stored into the word that
     // the next child's threshold loads would stall that load
     frontier_[k].refined_children = s.refined_children;
   }
 
-  // Adds the new vertex of tile k on its edge e, for it and for the tile
-  // across, if that one is subdivided at this level too.
-  Index add_new_vertex(std::size_t k, int e, double x, double y, double importance, Lookahead_worker& helper)
+  // Adds new vertex n of tile k, for it and for the tile across its edge,
+  // if that one is subdivided at this level too.
+  Index add_new_vertex(std::size_t k, int n, double importance, Lookahead_worker& helper)
   {
     // the helper's surveys read the points and importances: they must not move under it
     if(m_.points.size() == m_.points.capacity() || importance_.size() == importance_.capacity())
       if(helper.running()) helper.wait_for_all();
-    const Index v = add_vertex(x, y, importance);
     const Tile& t = frontier_[k];
+    const New_vertex_rule& nv = rule(t.tile_type()).new_vertices[n];
+    const int e = nv.edge;
+    const Flat_mesh::Point& a = m_.points[t.corners[nv.near_corner]];
+    const Flat_mesh::Point& b = m_.points[t.corners[nv.far_corner]];
+    const Index v = add_vertex(split_coordinate(a.x(), b.x()), split_coordinate(a.y(), b.y()), importance);
     work_[k].new_vertices[slot(e)] = v;
-    const Index g = m_.faces[t.face].n[face_edge(e)];
+    const Index g = m_.faces[face_of(k)].n[face_edge(e)];
     const Index across = tile_of_face(g);
     if(across != null) work_[across].new_vertices[slot_across(g, t, e)] = v;
     return v;
@@ -396,28 +423,35 @@ private:
       if(v[3 + n] != null) mask |= 1u << n;
     }
     const Split_pattern& p = split_patterns(t.tile_type(), mask);
-    const Flat_mesh::Face parent = m_.faces[t.face];
+    const Index own = face_of(k);
+    const Flat_mesh::Face parent = m_.faces[own];
 
     // a face at each split vertex before this tile's triangles take it over:
     // where the tile across came first, one of the triangles it left
     std::array<Index, 2> left;
     for(int n = 0; n < 2; ++n) left[n] = w.new_vertices[n] == null ? null : m_.vertex_face[w.new_vertices[n]];
     std::array<Index, 3> tri;
+    bool own_taken = false;
     for(int f = 0; f < p.number_of_triangles; ++f) {
       const auto& c = p.triangles[f].corners;
-      if(f == 0) { tri[f] = t.face; m_.reset_face(t.face, v[c[0]], v[c[1]], v[c[2]]); }
-      else tri[f] = m_.create_face(v[c[0]], v[c[1]], v[c[2]]);
+      const int child = p.triangles[f].child;
+      if(child >= 0 && (t.refined_children >> child & 1u)) {
+        tri[f] = next_base_ + next_child + refined_before(t, child);
+        m_.reset_face(tri[f], v[c[0]], v[c[1]], v[c[2]]);
+      } else if(!own_taken) {
+        tri[f] = own;
+        own_taken = true;
+        m_.reset_face(own, v[c[0]], v[c[1]], v[c[2]]);
+      } else {
+        tri[f] = create_face(v[c[0]], v[c[1]], v[c[2]]);
+      }
     }
     for(int f = 0; f < p.number_of_triangles; ++f)
       for(int j = 0; j < 3; ++j)
         if(p.places[f][j].parent_edge < 0) m_.faces[tri[f]].n[j] = tri[p.places[f][j].triangle];
     for(int e = 0; e < 3; ++e) connect_parent_edge(w, left, k, parent, e, p, tri);
-    // the children to subdivide next take their triangles
-    for(int f = 0; f < p.number_of_triangles; ++f) {
-      const int c = p.triangles[f].child;
-      if(c >= 0 && (t.refined_children >> c & 1u))
-        next_[next_child + refined_before(t, c)].face = tri[f];
-    }
+    // still the frontier's until this level ends: tile_of_face() must keep finding it
+    if(!own_taken) given_up_.push_back(own);
     next_child += refined_before(t, 3);
   }
 
@@ -489,7 +523,10 @@ private:
   Scratch_vector<Survey> surveys_;     // for the tiles of frontier_, by the helper
   Scratch_vector<double> importance_;   // per vertex, at the nearest point of the region
   Scratch_vector<std::pair<double, double>> target_;  // see take_targets()
-  Scratch_vector<Index> face_tile_;    // frontier tile of an intact face, or null
+  Index frontier_base_ = 0, next_base_ = 0;  // the faces of the tiles of frontier_ and next_
+  std::vector<Index> given_up_;       // at this level, to be taken over at the next
+  std::vector<Index> recycled_;       // given up at the level before, taken from next_recycled_ on
+  std::size_t next_recycled_ = 0;
 };
 
 } // namespace Penrose

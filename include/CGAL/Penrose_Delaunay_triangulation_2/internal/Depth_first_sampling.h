@@ -57,8 +57,8 @@ void for_each_sample_depth_first(const Sampling_context& context, Visitor&& visi
     for(int k = 0; k < r.number_of_new_vertices; ++k) {
       const New_vertex_rule& nv = r.new_vertices[k];
       const int v = 3 + k;
-      x[v] = x[nv.near_corner] + split_fraction * (x[nv.far_corner] - x[nv.near_corner]);
-      y[v] = y[nv.near_corner] + split_fraction * (y[nv.far_corner] - y[nv.near_corner]);
+      x[v] = split_coordinate(x[nv.near_corner], x[nv.far_corner]);
+      y[v] = split_coordinate(y[nv.near_corner], y[nv.far_corner]);
       importance[v] = context.importance(x[v], y[v]);
       if(nv.is_sample) {
         const Sample_birth b = { code * 4 + r.sample_code_pair,

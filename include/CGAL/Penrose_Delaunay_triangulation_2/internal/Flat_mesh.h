@@ -87,6 +87,16 @@ public:
     return f;
   }
 
+  // Appends `count` faces, alive, to be written with reset_face(); returns
+  // the first.
+  Index append_faces(std::size_t count)
+  {
+    const Index first = Index(faces.size());
+    faces.resize(faces.size() + count);
+    face_alive.resize(face_alive.size() + count, 1);
+    return first;
+  }
+
   // Overwrites face f in place with new vertices (keeps it alive, clears its neighbours).
   void reset_face(Index f, Index a, Index b, Index c)
   {

@@ -25,6 +25,10 @@ constexpr double golden_ratio = 1.6180339887498948482;
 // two tiles sharing the edge compute the same double from the same operands.
 constexpr double split_fraction = 0.38196601125010515180; // 1 / phi^2
 
+// The coordinate of a new vertex, from those of its near and far corners:
+// every traversal computes it here, so that all get the same double.
+inline double split_coordinate(double near, double far) { return near + split_fraction * (far - near); }
+
 // Unit vector of direction d (steps of 18 degrees, 0 = North, counter-clockwise).
 // Built so that u(d + 10) == -u(d) and the axis directions are exact.
 struct Direction_table
