@@ -3,8 +3,9 @@
 //
 // Whether a construction may start helper threads, and how it starts one.
 // None without threads (CGAL's CGAL_HAS_THREADS), nor where the user asks
-// for none (CGAL_PENROSE_NO_HELPER_THREAD); where no thread can be had, the
-// caller does the work itself.
+// for none (CGAL_PENROSE_NO_HELPER_THREAD), nor where the process may run on
+// one core only; where no thread can be had, the caller does the work
+// itself.
 
 #ifndef CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_HELPER_THREADS_H
 #define CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_HELPER_THREADS_H
@@ -16,6 +17,9 @@
 #  include <system_error>
 #  include <thread>
 #  include <utility>
+#  if defined(__linux__)
+#    include <sched.h>
+#  endif
 #endif
 
 namespace CGAL {
@@ -23,6 +27,17 @@ namespace internal {
 namespace Penrose {
 
 #if defined(CGAL_PENROSE_HELPER_THREADS)
+// Whether the process may run on more than one core (its affinity, where the
+// system tells it): on one, a helper would only take turns with the caller.
+inline bool more_than_one_core()
+{
+#  if defined(__linux__) && defined(CPU_COUNT)
+  cpu_set_t allowed;
+  if(sched_getaffinity(0, sizeof(allowed), &allowed) == 0) return CPU_COUNT(&allowed) > 1;
+#  endif
+  return std::thread::hardware_concurrency() > 1;
+}
+
 // A thread running `f`, or, where none can be started, no thread (not
 // joinable).
 template <class F>

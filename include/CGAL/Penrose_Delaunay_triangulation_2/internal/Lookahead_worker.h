@@ -33,9 +33,6 @@
 #  include <condition_variable>
 #  include <mutex>
 #  include <thread>
-#  if defined(__linux__)
-#    include <sched.h>
-#  endif
 #  if defined(__x86_64__) || defined(__i386__)
 #    include <immintrin.h>
 #    define CGAL_PENROSE_SPIN_PAUSE() _mm_pause()
@@ -131,16 +128,6 @@ public:
 private:
 #if defined(CGAL_PENROSE_HELPER_THREADS)
   static constexpr std::size_t chunk = 64;
-
-  // On one core the two threads' spinning would take turns by time slices.
-  static bool more_than_one_core()
-  {
-#  if defined(__linux__) && defined(CPU_COUNT)
-    cpu_set_t allowed;
-    if(sched_getaffinity(0, sizeof(allowed), &allowed) == 0) return CPU_COUNT(&allowed) > 1;
-#  endif
-    return std::thread::hardware_concurrency() > 1;
-  }
 
   // Spins, but lets another thread of the core run now and then.
   static void pause(unsigned& spins)

@@ -67,7 +67,7 @@ public:
   {
 #if defined(CGAL_PENROSE_HELPER_THREADS)
     if constexpr(Has_reservable_vertices<Tds>::value)
-      if(vertices >= least_vertices && std::thread::hardware_concurrency() > 1) {
+      if(vertices >= least_vertices && more_than_one_core()) {
         helper_ = try_to_start_thread([this, vertices, faces, release]() mutable {
           release();
           prepare(vertices, faces);

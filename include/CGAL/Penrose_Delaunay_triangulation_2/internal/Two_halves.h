@@ -39,7 +39,7 @@ template <class Half>
 void run_in_two_halves(bool worth_a_thread, const Half& half)
 {
 #if defined(CGAL_PENROSE_HELPER_THREADS)
-  if(worth_a_thread && std::thread::hardware_concurrency() > 1) {
+  if(worth_a_thread && more_than_one_core()) {
     std::exception_ptr helper_failed;
     std::thread helper = try_to_start_thread([&half, &helper_failed] {
       try {
