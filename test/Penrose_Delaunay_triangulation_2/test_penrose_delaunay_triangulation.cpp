@@ -34,6 +34,10 @@
 #include <utility>
 #include <vector>
 
+#if defined(__linux__)
+#  include <sched.h>
+#endif
+
 namespace {
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel Epick;
@@ -271,6 +275,44 @@ TEST(Internals, TwoHalvesRunBothHalvesTheSecondOnAHelper)
     EXPECT_EQ(ran_on[1] != std::this_thread::get_id(), helped) << worth_a_thread;
   }
 }
+
+#if defined(CGAL_PENROSE_HELPER_THREADS) && defined(__linux__) && defined(CPU_COUNT)
+TEST(Triangulation, HelperThreadsChangeNothingInTheConstruction)
+{
+  // the last level's triangles are made in two halves, on two threads where
+  // there are two cores: confined to one core, the construction runs without
+  // helpers, and its base mesh must be the same (as many flips, removals,
+  // repairs), not only its result
+  const Sampler s(unit_square, [](const Point& p) { return 0.3 + p.x() * p.x() + p.y(); },
+                  CGAL::parameters::number_of_output_points(250000));
+  const CGAL::Penrose_Delaunay_triangulation_2<Epick> helped(s);
+  cpu_set_t all, one;
+  ASSERT_EQ(sched_getaffinity(0, sizeof(all), &all), 0);
+  CPU_ZERO(&one);
+  for(int c = 0; c < CPU_SETSIZE; ++c)
+    if(CPU_ISSET(c, &all)) {
+      CPU_SET(c, &one);
+      break;
+    }
+  ASSERT_EQ(sched_setaffinity(0, sizeof(one), &one), 0);
+  EXPECT_FALSE(CGAL::internal::Penrose::more_than_one_core());
+  const CGAL::Penrose_Delaunay_triangulation_2<Epick> alone(s);
+  ASSERT_EQ(sched_setaffinity(0, sizeof(all), &all), 0);
+  const auto& a = helped.construction_statistics();
+  const auto& b = alone.construction_statistics();
+  EXPECT_EQ(a.flips, b.flips);
+  EXPECT_EQ(a.base_vertices, b.base_vertices);
+  EXPECT_EQ(a.removed_vertices, b.removed_vertices);
+  EXPECT_EQ(a.repaired_vertices, b.repaired_vertices);
+  EXPECT_EQ(a.fallbacks, b.fallbacks);
+  EXPECT_GT(a.flips, 0u);
+  EXPECT_TRUE(edge_set(helped, xy_of) == edge_set(alone, xy_of));
+  std::vector<Point> points;
+  s(std::back_inserter(points));
+  const CGAL::Delaunay_triangulation_2<Epick> dt(points.begin(), points.end());
+  EXPECT_TRUE(edge_set(helped, xy_of) == edge_set(dt, xy_of));
+}
+#endif
 
 TEST(Triangulation, BadDensityFoundByTheHelperThrowsAsWithout)
 {

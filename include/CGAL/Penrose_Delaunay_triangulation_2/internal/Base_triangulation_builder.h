@@ -24,7 +24,9 @@
 //
 // What each tile's subdivision decides from the importance field alone (its
 // survey) is apart from the mesh: a helper thread, where there is one,
-// surveys a level's tiles ahead of the thread that builds the mesh.
+// surveys a level's tiles ahead of the thread that builds the mesh. On the
+// last level, which leaves it nothing to survey while the triangles are
+// made, it makes those of half of the tiles.
 
 #ifndef CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_BASE_TRIANGULATION_BUILDER_H
 #define CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_BASE_TRIANGULATION_BUILDER_H
@@ -41,6 +43,7 @@
 #include <cstdint>
 #include <functional>
 #include <limits>
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -110,10 +113,9 @@ public:
       work_.assign(frontier_.size(), Work());
       next_.clear();
       const double done = double(tiles_done), half = 0.5 * double(frontier_.size());
-      Index next_child = 0;
       if(surveyed_ahead && level == 0) start_surveys(helper, frontier_, level);
       const bool completed =
-        for_each_tile([&](std::size_t k) { return report(done + 0.5 * k); },
+        for_each_tile(0, frontier_.size(), [&](std::size_t k) { return report(done + 0.5 * k); },
                       [this, surveyed_ahead](const Tile& t) { if(!surveyed_ahead) fetch_corners(t); },
                       [this, &helper, surveyed_ahead, level](std::size_t k) {
                         if(!surveyed_ahead) { create_vertices(k, level, survey(frontier_[k], level), helper); return; }
@@ -123,20 +125,18 @@ public:
         // the next level's tiles are all known: surveyed while this level's triangles are linked
         (!surveyed_ahead || start_surveys(helper, next_, level + 1)) &&
         (next_base_ = m_.append_faces(next_.size()), true) &&
-        for_each_tile([&](std::size_t k) { return report(done + half + 0.5 * k); },
-                      [](const Tile&) {},
-                      [this, &next_child](std::size_t k) { create_triangles(k, next_child); });
+        ((next_.empty() && frontier_.size() >= least_tiles_for_halves)
+           ? create_last_triangles_in_halves(helper, [&](std::size_t k) { return report(done + half + 0.5 * k); })
+           : create_level_triangles([&](std::size_t k) { return report(done + half + 0.5 * k); }));
       if(!completed) return false;
       tiles_done += frontier_.size();
       frontier_.swap(next_);
       frontier_base_ = next_base_;
       // the faces given up at this level are taken over at the next one
-      recycled_.erase(recycled_.begin(), recycled_.begin() + std::ptrdiff_t(next_recycled_));
       recycled_.insert(recycled_.end(), given_up_.begin(), given_up_.end());
       given_up_.clear();
-      next_recycled_ = 0;
     }
-    for(std::size_t i = next_recycled_; i < recycled_.size(); ++i) m_.delete_face(recycled_[i]);
+    for(Index f : recycled_) m_.delete_face(f);
     return true;
   }
 
@@ -275,15 +275,227 @@ private:
     return t.threshold + pair_weight(cr.code_pair, child_level);
   }
 
-  // Runs `step(k)` on every tile k of the frontier, while `proceed(k)`,
+  // The faces that a walk over tiles gives to what is neither a tile's own
+  // face nor a child's: a triangle takes one of those given up at the level
+  // before while any is left, otherwise a new one, as the half of a leaf
+  // face that a tile splits does. New faces are appended one by one
+  // (`reserved` null) or taken in order from those reserved at `reserved`.
+  struct Face_supply
+  {
+    const Index* recycled;
+    std::size_t recycled_count;
+    Index reserved;
+    std::size_t recycled_taken, new_taken;
+  };
+
+  // What the triangles of a tile take from a Face_supply.
+  struct Faces_needed
+  {
+    std::size_t triangles, splits;
+  };
+
+  Index take_face(Face_supply& s)
+  {
+    if(s.recycled_taken < s.recycled_count) return s.recycled[s.recycled_taken++];
+    return take_new_face(s);
+  }
+
+  Index take_new_face(Face_supply& s)
+  {
+    const std::size_t i = s.new_taken++;
+    return s.reserved == null ? m_.new_face() : s.reserved + Index(i);
+  }
+
+  // Takes nothing, but moves on as if `needed` were taken.
+  static void skip(Face_supply& s, const Faces_needed& needed)
+  {
+    const std::size_t recycled = (std::min)(needed.triangles, s.recycled_count - s.recycled_taken);
+    s.recycled_taken += recycled;
+    s.new_taken += needed.triangles - recycled + needed.splits;
+  }
+
+  // Phase 2 of a level, tile after tile: the tile across an edge is done if
+  // it comes before.
+  template <class Proceed>
+  bool create_level_triangles(const Proceed& proceed)
+  {
+    Face_supply s{recycled_.data(), recycled_.size(), null, 0, 0};
+    Index next_child = 0;
+    const bool completed = for_each_tile(0, frontier_.size(), proceed, [](const Tile&) {},
+                                         [&](std::size_t k) {
+                                           create_triangles(k, next_child, s, [k](Index a) { return a < k; });
+                                         });
+    recycled_.erase(recycled_.begin(), recycled_.begin() + std::ptrdiff_t(s.recycled_taken));
+    return completed;
+  }
+
+  // Below this many tiles, the last level's triangles are made in one walk.
+  static constexpr std::size_t least_tiles_for_halves = std::size_t(1) << 16;
+
+  // Phase 2 of the last level, which has no children (the helper is idle
+  // then): the tiles in two halves of the frontier, the second on the
+  // helper. Two tiles of different halves may not write the same faces or
+  // vertices, which they could only do through a vertex that both touch
+  // (a corner of either, or a vertex of a leaf face across an edge of
+  // either): each half first marks the vertices that its tiles touch, and
+  // counts the faces they will take, so that the faces of each half can be
+  // reserved; then each half triangulates its tiles but those that touch a
+  // vertex marked by the other, which are postponed, keeping their faces,
+  // and done last, in order. Deterministic: the mesh is the same whether the
+  // halves run on two threads or one after the other.
+  template <class Proceed>
+  bool create_last_triangles_in_halves(Lookahead_worker& helper, const Proceed& proceed)
+  {
+    const std::size_t n = frontier_.size(), vertices = m_.points.size();
+    const std::array<std::size_t, 3> bounds = {{0, n / 2, n}};
+    // left uninitialized here, to be cleared by the halves
+    std::array<std::unique_ptr<unsigned char[]>, 2> marks = {{std::unique_ptr<unsigned char[]>(new unsigned char[vertices]),
+                                                             std::unique_ptr<unsigned char[]>(new unsigned char[vertices])}};
+    const std::unique_ptr<unsigned char[]> postponed_tile(new unsigned char[n]);
+    std::array<Faces_needed, 2> needed;
+    in_two_halves(helper, [&](int h) {
+      std::fill_n(marks[h].get(), vertices, 0);
+      std::fill(postponed_tile.get() + bounds[h], postponed_tile.get() + bounds[h + 1], 0);
+      needed[h] = mark_touched_vertices(bounds[h], bounds[h + 1], marks[h].get());
+    });
+
+    // the two halves' supplies, as if the second came after the first
+    std::array<Face_supply, 2> supply;
+    supply[0] = Face_supply{recycled_.data(), recycled_.size(), null, 0, 0};
+    skip(supply[0], needed[0]);
+    supply[1] = Face_supply{recycled_.data() + supply[0].recycled_taken, recycled_.size() - supply[0].recycled_taken,
+                            null, 0, 0};
+    skip(supply[1], needed[1]);
+    const Index reserved = m_.append_faces(supply[0].new_taken + supply[1].new_taken);
+    supply[1] = Face_supply{supply[1].recycled, supply[1].recycled_taken, reserved + Index(supply[0].new_taken), 0, 0};
+    supply[0] = Face_supply{supply[0].recycled, supply[0].recycled_taken, reserved, 0, 0};
+    const std::size_t recycled_taken = supply[0].recycled_count + supply[1].recycled_count;
+
+    std::array<std::vector<std::pair<std::size_t, Face_supply>>, 2> postponed;  // tile, supply before it
+    bool completed = true;
+    in_two_halves(helper, [&](int h) {
+      const unsigned char* other = marks[1 - h].get();
+      // the halves' own copies: sharing a cache line, the two would take turns at it
+      Face_supply s = supply[h];
+      std::vector<std::pair<std::size_t, Face_supply>> later;
+      Index next_child = 0;
+      auto step = [&](std::size_t k) {
+        if(touches_marked_vertex(k, other)) {
+          postponed_tile[k] = 1;
+          later.emplace_back(k, s);
+          skip(s, faces_needed(k));
+          return;
+        }
+        create_triangles(k, next_child, s, [&postponed_tile, k](Index a) { return a < k && !postponed_tile[a]; });
+      };
+      // only the calling thread asks whether to go on
+      auto go_on = [&](std::size_t k) { return h == 1 || proceed(k); };
+      const bool walked = for_each_tile(bounds[h], bounds[h + 1], go_on, [](const Tile&) {}, step);
+      CGAL_assertion(!walked || (s.recycled_taken == s.recycled_count &&
+                                 s.new_taken == needed[h].triangles + needed[h].splits - s.recycled_count));
+      if(!walked) completed = false;  // by the calling thread only
+      postponed[h].swap(later);
+    });
+    if(!completed) return false;
+    Index next_child = 0;
+    for(auto& half : postponed)
+      for(auto& [k, s] : half) {
+        CGAL_assertion_code(Face_supply after = s; skip(after, faces_needed(k));)
+        create_triangles(k, next_child, s, [&postponed_tile, k = k](Index a) { return a < k || !postponed_tile[a]; });
+        CGAL_assertion(s.recycled_taken == after.recycled_taken && s.new_taken == after.new_taken);
+      }
+    recycled_.erase(recycled_.begin(), recycled_.begin() + std::ptrdiff_t(recycled_taken));
+    return true;
+  }
+
+  // Runs `half(1)` on the helper, where it runs, and `half(0)` here, and
+  // returns once both are done.
+  template <class Half>
+  static void in_two_halves(Lookahead_worker& helper, const Half& half)
+  {
+    helper.start(1, [&half](std::size_t, std::size_t) { half(1); });
+    try {
+      half(0);
+    } catch(...) {
+      try { helper.wait_for_all(); } catch(...) {}
+      throw;
+    }
+    helper.wait_for_all();
+  }
+
+  // Marks the vertices that the triangulation of the tiles from `begin` to
+  // `end` touches: their corners and the vertices of the leaf faces across
+  // their edges, which the tiles split or link to. Returns the faces they
+  // will take.
+  Faces_needed mark_touched_vertices(std::size_t begin, std::size_t end, unsigned char* mark) const
+  {
+    Faces_needed all{0, 0};
+    for(std::size_t k = begin; k < end; ++k) {
+      if(k + ahead < end)
+        for(Index g : m_.faces[face_of(k + ahead)].n)
+          if(g != null) CGAL_PENROSE_PREFETCH(&m_.faces[g]);
+      for(Index c : frontier_[k].corners) mark[c] = 1;
+      for(Index g : m_.faces[face_of(k)].n)
+        if(is_leaf(g))
+          for(Index v : m_.faces[g].v) mark[v] = 1;
+      const Faces_needed f = faces_needed(k);
+      all.triangles += f.triangles;
+      all.splits += f.splits;
+    }
+    return all;
+  }
+
+  // Whether the triangulation of tile k touches a vertex that `mark` marks
+  // (see mark_touched_vertices()). The faces across its edges may have
+  // changed since they were marked, but only by tiles of the same half that
+  // were not postponed, and then the vertices they hold now are marked as
+  // the ones they held were.
+  bool touches_marked_vertex(std::size_t k, const unsigned char* mark) const
+  {
+    for(Index c : frontier_[k].corners)
+      if(mark[c]) return true;
+    for(Index g : m_.faces[face_of(k)].n)
+      if(is_leaf(g))
+        for(Index v : m_.faces[g].v)
+          if(mark[v]) return true;
+    return false;
+  }
+
+  // Whether face g, across an edge of a tile of the last level, is no tile's.
+  bool is_leaf(Index g) const { return g != null && tile_of_face(g) == null; }
+
+  // The faces that the triangles of tile k of the last level take: one for
+  // each but the first, which is the tile's own, and one for each leaf face
+  // that they split.
+  Faces_needed faces_needed(std::size_t k) const
+  {
+    const Tile& t = frontier_[k];
+    const Split_pattern& p = split_patterns(t.tile_type(), new_vertex_mask(t, work_[k]));
+    const Flat_mesh::Face& own = m_.faces[face_of(k)];
+    Faces_needed f{std::size_t(p.number_of_triangles) - 1, 0};
+    for(int e = 0; e < 3; ++e)
+      if(p.number_of_segments[e] == 2 && is_leaf(own.n[face_edge(e)])) ++f.splits;
+    return f;
+  }
+
+  // Bit n: new vertex n of tile t is in the mesh.
+  static unsigned new_vertex_mask(const Tile& t, const Work& w)
+  {
+    const Subdivision_rule& r = rule(t.tile_type());
+    unsigned mask = 0;
+    for(int n = 0; n < r.number_of_new_vertices; ++n)
+      if(w.new_vertices[slot(r.new_vertices[n].edge)] != null) mask |= 1u << n;
+    return mask;
+  }
+
+  // Runs `step(k)` on the tiles k of the frontier from `begin` to `n`, while `proceed(k)`,
   // asked now and then, agrees. The walk is bound by memory: it fetches what
   // a tile reads some steps ahead, its face and `fetch(tile)` first, then,
   // once that face is in, the faces across its edges and their tiles.
   template <class Proceed, class Fetch, class Step>
-  bool for_each_tile(const Proceed& proceed, const Fetch& fetch, const Step& step)
+  bool for_each_tile(std::size_t begin, std::size_t n, const Proceed& proceed, const Fetch& fetch, const Step& step)
   {
-    const std::size_t n = frontier_.size();
-    for(std::size_t k = 0; k < n; ++k) {
+    for(std::size_t k = begin; k < n; ++k) {
       if(k % progress_period == 0 && !proceed(k)) return false;
       if(k + 2 * ahead < n) {
         fetch(frontier_[k + 2 * ahead]);
@@ -319,16 +531,6 @@ private:
   Index tile_of_face(Index g) const
   {
     return (g != null && g >= frontier_base_ && g - frontier_base_ < frontier_.size()) ? g - frontier_base_ : null;
-  }
-
-  // A face for a triangle that is no tile's: one given up at the level
-  // before, or a new one.
-  Index create_face(Index a, Index b, Index c)
-  {
-    if(next_recycled_ == recycled_.size()) return m_.create_face(a, b, c);
-    const Index f = recycled_[next_recycled_++];
-    m_.reset_face(f, a, b, c);
-    return f;
   }
 
   // Phase 1: the samples born on the new vertices, and the children that
@@ -410,19 +612,17 @@ private:
   // Phase 2: the triangles of the tile, and their links across its edges.
   // `next_child`: where the tile's first child in the next frontier is, if
   // any; advanced past its children (the tiles are walked in the order of
-  // phase 1, which placed them).
-  void create_triangles(std::size_t k, Index& next_child)
+  // phase 1, which placed them). The other new faces come from `supply`;
+  // `done(a)` says whether tile a, across an edge, is triangulated.
+  template <class Done>
+  void create_triangles(std::size_t k, Index& next_child, Face_supply& supply, const Done& done)
   {
     const Tile& t = frontier_[k];
     const Work& w = work_[k];
     const Subdivision_rule& r = rule(t.tile_type());
     std::array<Index, 5> v = {{t.corners[0], t.corners[1], t.corners[2], null, null}};
-    unsigned mask = 0;  // the new vertices present
-    for(int n = 0; n < r.number_of_new_vertices; ++n) {
-      v[3 + n] = w.new_vertices[slot(r.new_vertices[n].edge)];
-      if(v[3 + n] != null) mask |= 1u << n;
-    }
-    const Split_pattern& p = split_patterns(t.tile_type(), mask);
+    for(int n = 0; n < r.number_of_new_vertices; ++n) v[3 + n] = w.new_vertices[slot(r.new_vertices[n].edge)];
+    const Split_pattern& p = split_patterns(t.tile_type(), new_vertex_mask(t, w));
     const Index own = face_of(k);
     const Flat_mesh::Face parent = m_.faces[own];
 
@@ -443,20 +643,23 @@ private:
         own_taken = true;
         m_.reset_face(own, v[c[0]], v[c[1]], v[c[2]]);
       } else {
-        tri[f] = create_face(v[c[0]], v[c[1]], v[c[2]]);
+        tri[f] = take_face(supply);
+        m_.reset_face(tri[f], v[c[0]], v[c[1]], v[c[2]]);
       }
     }
     for(int f = 0; f < p.number_of_triangles; ++f)
       for(int j = 0; j < 3; ++j)
         if(p.places[f][j].parent_edge < 0) m_.faces[tri[f]].n[j] = tri[p.places[f][j].triangle];
-    for(int e = 0; e < 3; ++e) connect_parent_edge(w, left, k, parent, e, p, tri);
+    for(int e = 0; e < 3; ++e) connect_parent_edge(w, left, parent, e, p, tri, supply, done);
     // still the frontier's until this level ends: tile_of_face() must keep finding it
     if(!own_taken) given_up_.push_back(own);
     next_child += refined_before(t, 3);
   }
 
-  void connect_parent_edge(const Work& w, const std::array<Index, 2>& left, std::size_t k, const Flat_mesh::Face& parent, int e,
-                           const Split_pattern& p, const std::array<Index, 3>& tri)
+  template <class Done>
+  void connect_parent_edge(const Work& w, const std::array<Index, 2>& left, const Flat_mesh::Face& parent, int e,
+                           const Split_pattern& p, const std::array<Index, 3>& tri, Face_supply& supply,
+                           const Done& done)
   {
     const Index a = parent.v[e], b = parent.v[(e + 1) % 3];
     const Index g = parent.n[face_edge(e)];
@@ -473,7 +676,7 @@ private:
     const int n = slot(e);
     const Index x = w.new_vertices[n];
     if(g == null) return;  // the root's boundary
-    if(across != null && across < k) {  // the tile across is done: take its triangles
+    if(across != null && done(across)) {  // take the triangles it left
       const std::array<Index, 2> f = triangles_left_at(left[n], x, a, b);
       m_.link(seg[0], seg_edge[0], f[0], m_.edge_index(f[0], x, a));
       m_.link(seg[1], seg_edge[1], f[1], m_.edge_index(f[1], b, x));
@@ -486,7 +689,7 @@ private:
     }
     // a leaf, or part of one: split it at x
     const int ge = m_.edge_index(g, b, a);
-    const Index h = m_.split_face_on_edge(g, ge, x);  // g keeps b-x, h takes x-a
+    const Index h = m_.split_face_on_edge(g, ge, x, take_new_face(supply));  // g keeps b-x, h takes x-a
     m_.link(seg[0], seg_edge[0], h, 0);
     m_.link(seg[1], seg_edge[1], g, 0);
   }
@@ -525,8 +728,7 @@ private:
   Scratch_vector<std::pair<double, double>> target_;  // see take_targets()
   Index frontier_base_ = 0, next_base_ = 0;  // the faces of the tiles of frontier_ and next_
   std::vector<Index> given_up_;       // at this level, to be taken over at the next
-  std::vector<Index> recycled_;       // given up at the level before, taken from next_recycled_ on
-  std::size_t next_recycled_ = 0;
+  std::vector<Index> recycled_;       // given up at the levels before, not yet taken
 };
 
 } // namespace Penrose

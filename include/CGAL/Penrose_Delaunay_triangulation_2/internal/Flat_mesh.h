@@ -69,21 +69,24 @@ public:
     return Index(points.size() - 1);
   }
 
-  Index create_face(Index a, Index b, Index c)
+  // A face, alive, to be written with reset_face().
+  Index new_face()
   {
-    Index f;
     if(free_.empty()) {
-      f = Index(faces.size());
       faces.push_back(Face());
       face_alive.push_back(1);
-    } else {
-      f = free_.back();
-      free_.pop_back();
-      face_alive[f] = 1;
+      return Index(faces.size() - 1);
     }
-    faces[f].v = {{a, b, c}};
-    faces[f].n = {{null, null, null}};
-    vertex_face[a] = vertex_face[b] = vertex_face[c] = f;
+    const Index f = free_.back();
+    free_.pop_back();
+    face_alive[f] = 1;
+    return f;
+  }
+
+  Index create_face(Index a, Index b, Index c)
+  {
+    const Index f = new_face();
+    reset_face(f, a, b, c);
     return f;
   }
 
@@ -165,12 +168,15 @@ public:
   // Splits face f at vertex m, which lies on its edge i (opposite vertex i):
   // f keeps one half, a new face takes the other. Returns the new face, which
   // holds the part of the edge next to vertex cw(i).
-  Index split_face_on_edge(Index f, int i, Index m)
+  Index split_face_on_edge(Index f, int i, Index m) { return split_face_on_edge(f, i, m, new_face()); }
+
+  // The same, with g, a live face whose content is dead, as the new face.
+  Index split_face_on_edge(Index f, int i, Index m, Index g)
   {
     const Face F = faces[f];
     const Index apex = F.v[i], a = F.v[ccw(i)], b = F.v[cw(i)];
     // f becomes (apex, a, m); g becomes (apex, m, b)
-    const Index g = create_face(apex, m, b);
+    reset_face(g, apex, m, b);
     reset_face(f, apex, a, m);
     // the half-edges m-b (g's edge 0) and a-m (f's edge 0) are the caller's
     inherit_neighbor(g, 1, F.n[ccw(i)], f);

@@ -8,7 +8,8 @@
 // batch at a time: the caller starts the next one once it has consumed the
 // last, so a job never runs on two threads at once, and whatever the job
 // calls (a user's density, say) is never called concurrently with the
-// caller as long as the caller does not call it itself meanwhile.
+// caller as long as the caller does not call it itself meanwhile. A batch
+// of one item runs a job beside the caller, which waits for it at the end.
 //
 // The caller's waits spin: they are short, and a sleeping thread takes tens
 // of microseconds to wake. The helper, once done with a batch, spins a
