@@ -602,9 +602,11 @@ TEST(Triangulation, CallbackReportsAdvancementAndStops)
   const CGAL::Delaunay_triangulation_2<Epick> dt(points.begin(), points.end());
   EXPECT_TRUE(edge_set(pdt, xy_of) == edge_set(dt, xy_of));
 
-  // stopped within the tile tree, after the flips (while the TDS's storage is
-  // reserved) and after the TDS is written: empty, valid, and usable again
-  for(double limit : {0.3, 0.7, 0.95}) {
+  // stopped within the tile tree, as the last level's triangles begin (in
+  // two halves, the other on the helper), after the flips (while the TDS's
+  // storage is reserved) and after the TDS is written: empty, valid, and
+  // usable again
+  for(double limit : {0.3, 0.5, 0.7, 0.95}) {
     const std::function<bool(double)> stop = [limit](double a) { return a < limit; };
     EXPECT_FALSE(pdt.build(s, lift, no_info, CGAL::parameters::callback(stop))) << limit;
     EXPECT_EQ(pdt.number_of_vertices(), 0u) << limit;
