@@ -103,7 +103,9 @@ public:
     CGAL_precondition(i >= 0. && i <= fibonacci().level_importance[max_level + 1]);
     // log2(x) for x >= 1 exceeds its exponent plus its mantissa's fraction by
     // less than 0.09: the estimate is at most 0.09 steps_per_log2_ steps low
-    const double x = 1. + std::sqrt(5.) * i;
+    // sqrt(5) written out: under -frounding-math, which CGAL asks for,
+    // std::sqrt(5.) is computed at every call (only an estimate, corrected below)
+    const double x = 1. + 2.2360679774997896964 * i;
     std::uint64_t bits;
     std::memcpy(&bits, &x, sizeof bits);
     const double log2x = double(int(bits >> 52) - 1023) + double(bits & ((std::uint64_t(1) << 52) - 1)) * 0x1p-52;
