@@ -353,27 +353,27 @@ private:
                                                              std::unique_ptr<unsigned char[]>(new unsigned char[vertices])}};
     const std::unique_ptr<unsigned char[]> postponed_tile(new unsigned char[n]);
     std::array<Faces_needed, 2> needed;
-    in_two_halves(helper, [&](int h) {
+    helper.run_in_two_halves([&](int h) {
       std::fill_n(marks[h].get(), vertices, 0);
       std::fill(postponed_tile.get() + bounds[h], postponed_tile.get() + bounds[h + 1], 0);
       needed[h] = mark_touched_vertices(bounds[h], bounds[h + 1], marks[h].get());
     });
 
-    // the two halves' supplies, as if the second came after the first
-    std::array<Face_supply, 2> supply;
-    supply[0] = Face_supply{recycled_.data(), recycled_.size(), null, 0, 0};
-    skip(supply[0], needed[0]);
-    supply[1] = Face_supply{recycled_.data() + supply[0].recycled_taken, recycled_.size() - supply[0].recycled_taken,
-                            null, 0, 0};
-    skip(supply[1], needed[1]);
-    const Index reserved = m_.append_faces(supply[0].new_taken + supply[1].new_taken);
-    supply[1] = Face_supply{supply[1].recycled, supply[1].recycled_taken, reserved + Index(supply[0].new_taken), 0, 0};
-    supply[0] = Face_supply{supply[0].recycled, supply[0].recycled_taken, reserved, 0, 0};
-    const std::size_t recycled_taken = supply[0].recycled_count + supply[1].recycled_count;
+    // each half's share of the given-up faces and of the new ones, as if the
+    // second came after the first in one walk
+    Face_supply first{recycled_.data(), recycled_.size(), null, 0, 0};
+    skip(first, needed[0]);
+    Face_supply second{recycled_.data() + first.recycled_taken, recycled_.size() - first.recycled_taken, null, 0, 0};
+    skip(second, needed[1]);
+    const Index reserved = m_.append_faces(first.new_taken + second.new_taken);
+    std::array<Face_supply, 2> supply = {{Face_supply{first.recycled, first.recycled_taken, reserved, 0, 0},
+                                          Face_supply{second.recycled, second.recycled_taken,
+                                                      reserved + Index(first.new_taken), 0, 0}}};
+    const std::size_t recycled_taken = first.recycled_taken + second.recycled_taken;
 
     std::array<std::vector<std::pair<std::size_t, Face_supply>>, 2> postponed;  // tile, supply before it
     bool completed = true;
-    in_two_halves(helper, [&](int h) {
+    helper.run_in_two_halves([&](int h) {
       const unsigned char* other = marks[1 - h].get();
       // the halves' own copies: sharing a cache line, the two would take turns at it
       Face_supply s = supply[h];
@@ -406,21 +406,6 @@ private:
       }
     recycled_.erase(recycled_.begin(), recycled_.begin() + std::ptrdiff_t(recycled_taken));
     return true;
-  }
-
-  // Runs `half(1)` on the helper, where it runs, and `half(0)` here, and
-  // returns once both are done.
-  template <class Half>
-  static void in_two_halves(Lookahead_worker& helper, const Half& half)
-  {
-    helper.start(1, [&half](std::size_t, std::size_t) { half(1); });
-    try {
-      half(0);
-    } catch(...) {
-      try { helper.wait_for_all(); } catch(...) {}
-      throw;
-    }
-    helper.wait_for_all();
   }
 
   // Marks the vertices that the triangulation of the tiles from `begin` to

@@ -8,8 +8,8 @@
 // batch at a time: the caller starts the next one once it has consumed the
 // last, so a job never runs on two threads at once, and whatever the job
 // calls (a user's density, say) is never called concurrently with the
-// caller as long as the caller does not call it itself meanwhile. A batch
-// of one item runs a job beside the caller, which waits for it at the end.
+// caller as long as the caller does not call it itself meanwhile. Between
+// batches, the helper can also run one half of a walk in two halves.
 //
 // The caller's waits spin: they are short, and a sleeping thread takes tens
 // of microseconds to wake. The helper, once done with a batch, spins a
@@ -98,6 +98,27 @@ public:
     }
 #endif
     if(n > 0) job(0, n);
+  }
+
+  // Runs `half(0)` here and `half(1)` on the helper, where it runs (once it
+  // has left the last batch), otherwise here, first, and returns once both
+  // are done; like run_in_two_halves() of Two_halves.h, without starting a
+  // thread. What a half throws (the first half's exception where both
+  // throw) is rethrown once both have ended.
+  template <class Half>
+  void run_in_two_halves(const Half& half)
+  {
+    start(1, [&half](std::size_t, std::size_t) { half(1); });
+    try {
+      half(0);
+    } catch(...) {
+      try {
+        wait_for_all();
+      } catch(...) {
+      }
+      throw;
+    }
+    wait_for_all();
   }
 
   // Waits until item k of the batch is done.
