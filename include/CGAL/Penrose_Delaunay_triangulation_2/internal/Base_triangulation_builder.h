@@ -419,10 +419,7 @@ private:
       if(k + ahead < end)
         for(Index g : m_.faces[face_of(k + ahead)].n)
           if(g != null) CGAL_PENROSE_PREFETCH(&m_.faces[g]);
-      for(Index c : frontier_[k].corners) mark[c] = 1;
-      for(Index g : m_.faces[face_of(k)].n)
-        if(is_leaf(g))
-          for(Index v : m_.faces[g].v) mark[v] = 1;
+      any_touched_vertex(k, [mark](Index v) { mark[v] = 1; return false; });
       const Faces_needed f = faces_needed(k);
       all.triangles += f.triangles;
       all.splits += f.splits;
@@ -437,12 +434,21 @@ private:
   // the ones they held were.
   bool touches_marked_vertex(std::size_t k, const unsigned char* mark) const
   {
+    return any_touched_vertex(k, [mark](Index v) { return mark[v] != 0; });
+  }
+
+  // Whether `pred(v)` holds for a vertex v that the triangulation of tile k
+  // touches (its corners, and the vertices of the leaf faces across its
+  // edges); stops at the first.
+  template <class Pred>
+  bool any_touched_vertex(std::size_t k, const Pred& pred) const
+  {
     for(Index c : frontier_[k].corners)
-      if(mark[c]) return true;
+      if(pred(c)) return true;
     for(Index g : m_.faces[face_of(k)].n)
       if(is_leaf(g))
         for(Index v : m_.faces[g].v)
-          if(mark[v]) return true;
+          if(pred(v)) return true;
     return false;
   }
 
@@ -620,17 +626,10 @@ private:
     for(int f = 0; f < p.number_of_triangles; ++f) {
       const auto& c = p.triangles[f].corners;
       const int child = p.triangles[f].child;
-      if(child >= 0 && (t.refined_children >> child & 1u)) {
-        tri[f] = next_base_ + next_child + refined_before(t, child);
-        m_.reset_face(tri[f], v[c[0]], v[c[1]], v[c[2]]);
-      } else if(!own_taken) {
-        tri[f] = own;
-        own_taken = true;
-        m_.reset_face(own, v[c[0]], v[c[1]], v[c[2]]);
-      } else {
-        tri[f] = take_face(supply);
-        m_.reset_face(tri[f], v[c[0]], v[c[1]], v[c[2]]);
-      }
+      if(child >= 0 && (t.refined_children >> child & 1u)) tri[f] = next_base_ + next_child + refined_before(t, child);
+      else if(!own_taken) { tri[f] = own; own_taken = true; }
+      else tri[f] = take_face(supply);
+      m_.reset_face(tri[f], v[c[0]], v[c[1]], v[c[2]]);
     }
     for(int f = 0; f < p.number_of_triangles; ++f)
       for(int j = 0; j < 3; ++j)
