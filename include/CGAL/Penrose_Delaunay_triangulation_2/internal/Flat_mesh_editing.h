@@ -45,25 +45,24 @@ public:
   // Removes the interior vertices `doomed`, in order, and returns those
   // that remove_vertex() refused; `removed` counts the others. They are
   // sparse in memory, so that each removal would begin with a chain of cache
-  // misses: what the next ones read first is fetched some removals ahead,
-  // in steps (the vertex's face, then that face, then its neighbours and
-  // vertices).
+  // misses: what the next ones read is fetched some removals ahead, in
+  // steps (the vertex's face, then that face, then the faces around it ring
+  // after ring, with their vertices), each step reading only what the one
+  // before fetched. The star of a vertex and the faces across its ring lie
+  // within three rings of any of its faces: fetching only the first ring,
+  // the removals of 10^6 constant-density points took 4.0 ms instead of 3.3.
   std::vector<Index> remove_vertices(const std::vector<Index>& doomed, std::size_t& removed)
   {
     std::vector<Index> refused;
     const std::size_t n = doomed.size();
+    auto face_ahead = [&](std::size_t k) { return k < n ? m_.vertex_face[doomed[k]] : null; };
     for(std::size_t k = 0; k < n; ++k) {
       if(k + 12 < n) CGAL_PENROSE_PREFETCH(&m_.vertex_face[doomed[k + 12]]);
-      if(k + 8 < n) {
-        CGAL_PENROSE_PREFETCH(&m_.points[doomed[k + 8]]);
-        if(const Index f = m_.vertex_face[doomed[k + 8]]; f != null) CGAL_PENROSE_PREFETCH(&m_.faces[f]);
-      }
-      if(k + 4 < n)
-        if(const Index f = m_.vertex_face[doomed[k + 4]]; f != null)
-          for(int i = 0; i < 3; ++i) {
-            CGAL_PENROSE_PREFETCH(&m_.points[m_.faces[f].v[i]]);
-            if(const Index g = m_.faces[f].n[i]; g != null) CGAL_PENROSE_PREFETCH(&m_.faces[g]);
-          }
+      if(k + 8 < n) CGAL_PENROSE_PREFETCH(&m_.points[doomed[k + 8]]);
+      if(const Index f = face_ahead(k + 8); f != null) CGAL_PENROSE_PREFETCH(&m_.faces[f]);
+      if(const Index f = face_ahead(k + 4); f != null) fetch_rings(f, 0);
+      if(const Index f = face_ahead(k + 2); f != null) fetch_rings(f, 1);
+      if(const Index f = face_ahead(k + 1); f != null) fetch_rings(f, 2);
       if(remove_vertex(doomed[k])) ++removed;
       else refused.push_back(doomed[k]);
     }
@@ -169,6 +168,21 @@ public:
   }
 
 private:
+  // Fetches the vertices of f and the faces next to it, and so on for
+  // `depth` more rings of faces.
+  void fetch_rings(Index f, int depth) const
+  {
+    for(int i = 0; i < 3; ++i) {
+      const Index g = m_.faces[f].n[i];
+      if(depth == 0) {
+        CGAL_PENROSE_PREFETCH(&m_.points[m_.faces[f].v[i]]);
+        if(g != null) CGAL_PENROSE_PREFETCH(&m_.faces[g]);
+      } else if(g != null) {
+        fetch_rings(g, depth - 1);
+      }
+    }
+  }
+
   bool positive(Index f) const
   {
     const Flat_mesh::Face& F = m_.faces[f];
