@@ -412,18 +412,15 @@ private:
   // `end` touches: their corners and the vertices of the leaf faces across
   // their edges, which the tiles split or link to. Returns the faces they
   // will take.
-  Faces_needed mark_touched_vertices(std::size_t begin, std::size_t end, unsigned char* mark) const
+  Faces_needed mark_touched_vertices(std::size_t begin, std::size_t end, unsigned char* mark)
   {
     Faces_needed all{0, 0};
-    for(std::size_t k = begin; k < end; ++k) {
-      if(k + ahead < end)
-        for(Index g : m_.faces[face_of(k + ahead)].n)
-          if(g != null) CGAL_PENROSE_PREFETCH(&m_.faces[g]);
+    for_each_tile(begin, end, [](std::size_t) { return true; }, [](const Tile&) {}, [&](std::size_t k) {
       any_touched_vertex(k, [mark](Index v) { mark[v] = 1; return false; });
       const Faces_needed f = faces_needed(k);
       all.triangles += f.triangles;
       all.splits += f.splits;
-    }
+    });
     return all;
   }
 
