@@ -179,6 +179,23 @@ struct Kept_huge_pages {};
 struct Small_pages {};
 #endif
 
+// Faults in, writable, the whole small pages of [begin, end), which must be
+// mapped: the first touch of a fresh page costs a fault wherever it comes,
+// and a thread with nothing else to do can take it off the thread that will
+// write there. Returns false where the system cannot (before Linux 5.14,
+// elsewhere), and then does nothing.
+inline bool populate_pages(const void* begin, const void* end)
+{
+#if defined(CGAL_PENROSE_HUGE_PAGES) && defined(MADV_POPULATE_WRITE)
+  const std::uintptr_t first = (std::uintptr_t(begin) + Small_pages::page - 1) & ~(Small_pages::page - 1);
+  const std::uintptr_t last = std::uintptr_t(end) & ~(Small_pages::page - 1);
+  return last <= first || madvise(reinterpret_cast<void*>(first), last - first, MADV_POPULATE_WRITE) == 0;
+#else
+  (void)begin; (void)end;
+  return false;
+#endif
+}
+
 // An allocator whose large blocks come from `Pages`; elsewhere, and for
 // small arrays, this is std::allocator.
 template <class T, class Pages>

@@ -11,8 +11,8 @@
 // caller as long as the caller does not call it itself meanwhile. Between
 // batches, the helper can also run one half of a walk in two halves.
 //
-// The caller's waits spin: they are short, and a sleeping thread takes tens
-// of microseconds to wake. The helper, once done with a batch, spins a
+// The caller's waits spin, or do what the caller gives them to do meanwhile:
+// they are short, and a sleeping thread takes tens of microseconds to wake. The helper, once done with a batch, spins a
 // little, then sleeps until the next one: spinning on, it would slow the
 // caller down wherever the two threads share a core's execution units. What
 // a job throws is rethrown to the caller when it waits for an item of the
@@ -121,22 +121,30 @@ public:
     wait_for_all();
   }
 
-  // Waits until item k of the batch is done.
-  void wait_for(std::size_t k)
+  // Waits until item k of the batch is done, calling `idle()`, while it
+  // returns true, instead of spinning: what the caller can do meanwhile.
+  template <class Idle>
+  void wait_for(std::size_t k, Idle idle)
   {
 #if defined(CGAL_PENROSE_HELPER_THREADS)
     if(!running()) return;
     unsigned spins = 0;
+    bool busy = true;
     while(seen_ <= k) {
       seen_ = done_.load(std::memory_order_acquire);
       if(seen_ <= k) {
         if(failed_.load(std::memory_order_acquire)) rethrow();
-        pause(spins);
+        if(!busy || !(busy = idle())) pause(spins);
       }
     }
 #else
-    (void)k;
+    (void)k; (void)idle;
 #endif
+  }
+
+  void wait_for(std::size_t k)
+  {
+    wait_for(k, [] { return false; });
   }
 
   // Waits until the whole batch is done.
