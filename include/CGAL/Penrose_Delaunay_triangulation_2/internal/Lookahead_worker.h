@@ -12,11 +12,11 @@
 // batches, the helper can also run one half of a walk in two halves.
 //
 // The caller's waits spin, or do what the caller gives them to do meanwhile:
-// they are short, and a sleeping thread takes tens of microseconds to wake. The helper, once done with a batch, spins a
-// little, then sleeps until the next one: spinning on, it would slow the
-// caller down wherever the two threads share a core's execution units. What
-// a job throws is rethrown to the caller when it waits for an item of the
-// chunk that threw.
+// they are short, and a sleeping thread takes tens of microseconds to wake.
+// The helper, once done with a batch, spins a little, then sleeps until the
+// next one: spinning on, it would slow the caller down wherever the two
+// threads share a core's execution units. What a job throws is rethrown to
+// the caller when it waits for an item of the chunk that threw.
 
 #ifndef CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_LOOKAHEAD_WORKER_H
 #define CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_LOOKAHEAD_WORKER_H
