@@ -498,20 +498,20 @@ private:
     return mask;
   }
 
-  // Runs `step(k)` on the tiles k of the frontier from `begin` to `n`, while `proceed(k)`,
-  // asked now and then, agrees. The walk is bound by memory: it fetches what
+  // Runs `step(k)` on the tiles k of the frontier from `begin` to `end`,
+  // while `proceed(k)`, asked now and then, agrees. The walk is bound by memory: it fetches what
   // a tile reads some steps ahead, its face and `fetch(tile)` first, then,
   // once that face is in, the faces across its edges and their tiles.
   template <class Proceed, class Fetch, class Step>
-  bool for_each_tile(std::size_t begin, std::size_t n, const Proceed& proceed, const Fetch& fetch, const Step& step)
+  bool for_each_tile(std::size_t begin, std::size_t end, const Proceed& proceed, const Fetch& fetch, const Step& step)
   {
-    for(std::size_t k = begin; k < n; ++k) {
+    for(std::size_t k = begin; k < end; ++k) {
       if(k % progress_period == 0 && !proceed(k)) return false;
-      if(k + 2 * ahead < n) {
+      if(k + 2 * ahead < end) {
         fetch(frontier_[k + 2 * ahead]);
         CGAL_PENROSE_PREFETCH(&m_.faces[face_of(k + 2 * ahead)]);
       }
-      if(k + ahead < n)
+      if(k + ahead < end)
         for(Index g : m_.faces[face_of(k + ahead)].n)
           if(g != null) CGAL_PENROSE_PREFETCH(&m_.faces[g]);
       step(k);

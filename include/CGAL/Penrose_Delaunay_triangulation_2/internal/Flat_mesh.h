@@ -29,17 +29,6 @@
 #  define CGAL_PENROSE_PREFETCH(p) ((void)(p))
 #endif
 
-// Their rare paths are kept out of line: inlined, they take registers and
-// code space from the common path (with the exact in-circle test inlined,
-// the flips of a 10^6-point construction took 4 to 6 ms longer).
-#if defined(__GNUC__)
-#  define CGAL_PENROSE_NOINLINE __attribute__((noinline))
-#elif defined(_MSC_VER)
-#  define CGAL_PENROSE_NOINLINE __declspec(noinline)
-#else
-#  define CGAL_PENROSE_NOINLINE
-#endif
-
 namespace CGAL {
 namespace internal {
 namespace Penrose {
