@@ -36,6 +36,7 @@
 #include <CGAL/Penrose_Delaunay_triangulation_2/internal/Lookahead_worker.h>
 #include <CGAL/Penrose_Delaunay_triangulation_2/internal/Sampling_context.h>
 #include <CGAL/Penrose_Delaunay_triangulation_2/internal/Split_patterns.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Two_halves.h>
 
 #include <CGAL/assertions.h>
 
@@ -126,7 +127,7 @@ public:
         // the next level's tiles are all known: surveyed while this level's triangles are linked
         (!surveyed_ahead || start_surveys(helper, next_, level + 1)) &&
         (next_base_ = m_.append_faces(next_.size()), true) &&
-        ((next_.empty() && frontier_.size() >= least_tiles_for_halves)
+        ((next_.empty() && frontier_.size() >= least_size_for_two_halves)
            ? create_last_triangles_in_halves(helper, [&](std::size_t k) { return report(done + half + 0.5 * k); })
            : create_level_triangles([&](std::size_t k) { return report(done + half + 0.5 * k); }));
       if(!completed) return false;
@@ -351,9 +352,6 @@ private:
     return completed;
   }
 
-  // Below this many tiles, the last level's triangles are made in one walk.
-  static constexpr std::size_t least_tiles_for_halves = std::size_t(1) << 16;
-
   // Phase 2 of the last level, which has no children (the helper is idle
   // then): the tiles in two halves of the frontier, the second on the
   // helper. Two tiles of different halves may not write the same faces or
@@ -369,7 +367,6 @@ private:
   bool create_last_triangles_in_halves(Lookahead_worker& helper, const Proceed& proceed)
   {
     const std::size_t n = frontier_.size(), vertices = m_.points.size();
-    const std::array<std::size_t, 3> bounds = {{0, n / 2, n}};
     // left uninitialized here, to be cleared by the halves
     std::array<std::unique_ptr<unsigned char[]>, 2> marks = {{std::unique_ptr<unsigned char[]>(new unsigned char[vertices]),
                                                              std::unique_ptr<unsigned char[]>(new unsigned char[vertices])}};
@@ -377,8 +374,9 @@ private:
     std::array<Faces_needed, 2> needed;
     helper.run_in_two_halves([&](int h) {
       std::fill_n(marks[h].get(), vertices, 0);
-      std::fill(postponed_tile.get() + bounds[h], postponed_tile.get() + bounds[h + 1], 0);
-      needed[h] = mark_touched_vertices(bounds[h], bounds[h + 1], marks[h].get());
+      const Half_range tiles = half_of(n, h);
+      std::fill(postponed_tile.get() + tiles.begin, postponed_tile.get() + tiles.end, 0);
+      needed[h] = mark_touched_vertices(tiles.begin, tiles.end, marks[h].get());
     });
 
     // each half's share of the given-up faces and of the new ones, as if the
@@ -412,7 +410,8 @@ private:
       };
       // only the calling thread asks whether to go on
       auto go_on = [&](std::size_t k) { return h == 1 || proceed(k); };
-      const bool walked = for_each_tile(bounds[h], bounds[h + 1], go_on, [](const Tile&) {}, step);
+      const Half_range tiles = half_of(n, h);
+      const bool walked = for_each_tile(tiles.begin, tiles.end, go_on, [](const Tile&) {}, step);
       CGAL_assertion(!walked || (s.recycled_taken == s.recycled_count &&
                                  s.new_taken == needed[h].triangles + needed[h].splits - s.recycled_count));
       if(!walked) completed = false;  // by the calling thread only

@@ -7,7 +7,9 @@
 // after them). A thread is started for each walk, which the callers do only
 // for walks of least_size_for_two_halves items or more, like the other
 // helpers. Whether a helper is used follows the rules of Tds_reservation.h
-// (Helper_threads.h, and none on a machine with one core).
+// (Helper_threads.h, and none on a machine with one core). The base mesh's
+// last level is split by the same halves and threshold, its second half
+// run by the survey helper (Lookahead_worker::run_in_two_halves()).
 
 #ifndef CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_TWO_HALVES_H
 #define CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_TWO_HALVES_H
