@@ -433,7 +433,7 @@ private:
   // `end` touches: their corners and the vertices of the leaf faces across
   // their edges, which the tiles split or link to. Returns the faces they
   // will take.
-  Faces_needed mark_touched_vertices(std::size_t begin, std::size_t end, unsigned char* mark)
+  Faces_needed mark_touched_vertices(std::size_t begin, std::size_t end, unsigned char* mark) const
   {
     Faces_needed all{0, 0};
     for_each_tile(begin, end, [](std::size_t) { return true; }, [](const Tile&) {}, [&](std::size_t k) {
@@ -502,7 +502,8 @@ private:
   // a tile reads some steps ahead, its face and `fetch(tile)` first, then,
   // once that face is in, the faces across its edges and their tiles.
   template <class Proceed, class Fetch, class Step>
-  bool for_each_tile(std::size_t begin, std::size_t end, const Proceed& proceed, const Fetch& fetch, const Step& step)
+  bool for_each_tile(std::size_t begin, std::size_t end, const Proceed& proceed, const Fetch& fetch,
+                     const Step& step) const
   {
     for(std::size_t k = begin; k < end; ++k) {
       if(k % progress_period == 0 && !proceed(k)) return false;
