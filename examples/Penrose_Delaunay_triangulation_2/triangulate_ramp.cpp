@@ -1,14 +1,15 @@
 // The gradient ramp of the paper's Figure 7: samples of a density that grows
-// linearly from the left edge, and their Delaunay triangulation, written as OFF.
-// Usage: triangulate_ramp [number_of_points] [out.off]
+// linearly from the left edge, and their Delaunay triangulation, written as a
+// mesh file.
+// Usage: triangulate_ramp [number_of_points] [out.off|out.ply|out.obj]
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Penrose_Delaunay_triangulation_2.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/IO/write_triangulation.h>
 
 #include <cstdlib>
-#include <fstream>
+#include <exception>
 #include <iostream>
-#include <map>
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::Penrose_Delaunay_triangulation_2<K> Triangulation;
@@ -23,15 +24,11 @@ int main(int argc, char** argv)
   std::cout << dt.number_of_vertices() << " vertices, " << dt.number_of_faces() << " triangles, "
             << dt.number_of_flips() << " flips, " << dt.number_of_fallbacks() << " fallbacks\n";
 
-  // it is a Delaunay_triangulation_2: use it as one
-  std::ofstream off(argc > 2 ? argv[2] : "ramp.off");
-  off << "OFF\n" << dt.number_of_vertices() << ' ' << dt.number_of_faces() << " 0\n";
-  std::map<Triangulation::Vertex_handle, std::size_t> index;
-  for(auto v : dt.finite_vertex_handles()) {
-    off << v->point() << " 0\n";
-    index.emplace(v, index.size());
+  try {
+    CGAL::IO::write_triangulation(argc > 2 ? argv[2] : "ramp.off", dt);  // OFF, PLY or OBJ, by the extension
+  } catch(const std::exception& e) {
+    std::cerr << e.what() << "\n";
+    return EXIT_FAILURE;
   }
-  for(auto f : dt.finite_face_handles())
-    off << "3 " << index[f->vertex(0)] << ' ' << index[f->vertex(1)] << ' ' << index[f->vertex(2)] << '\n';
   return dt.is_valid() ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -2,17 +2,18 @@
 // and y with Projection_traits_xy_3, each vertex lifted to its height and
 // told, through a vertex base with info, the level of the tile it comes from.
 // The construction reports its advancement through the `callback` named
-// parameter. The mesh is written as OFF, with its heights.
-// Usage: triangulate_terrain [number_of_points] [out.off]
+// parameter. The mesh is written with its heights (OFF, PLY or OBJ).
+// Usage: triangulate_terrain [number_of_points] [out.off|out.ply|out.obj]
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Penrose_Delaunay_triangulation_2.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/IO/write_triangulation.h>
 #include <CGAL/Projection_traits_xy_3.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
 #include <cmath>
 #include <cstdlib>
-#include <fstream>
+#include <exception>
 #include <iostream>
 #include <map>
 
@@ -63,15 +64,11 @@ int main(int argc, char** argv)
   for(const auto& [level, count] : vertices_per_level) std::cout << ' ' << level << ':' << count;
   std::cout << "\n";
 
-  std::ofstream off(argc > 2 ? argv[2] : "terrain.off");
-  off.precision(17);
-  off << "OFF\n" << terrain.number_of_vertices() << ' ' << terrain.number_of_faces() << " 0\n";
-  std::map<Terrain::Vertex_handle, std::size_t> index;
-  for(auto v : terrain.finite_vertex_handles()) {
-    off << v->point() << "\n";
-    index.emplace(v, index.size());
+  try {
+    CGAL::IO::write_triangulation(argc > 2 ? argv[2] : "terrain.off", terrain);  // with the heights
+  } catch(const std::exception& e) {
+    std::cerr << e.what() << "\n";
+    return EXIT_FAILURE;
   }
-  for(auto f : terrain.finite_face_handles())
-    off << "3 " << index[f->vertex(0)] << ' ' << index[f->vertex(1)] << ' ' << index[f->vertex(2)] << '\n';
-  return terrain.is_valid() && off ? EXIT_SUCCESS : EXIT_FAILURE;
+  return terrain.is_valid() ? EXIT_SUCCESS : EXIT_FAILURE;
 }

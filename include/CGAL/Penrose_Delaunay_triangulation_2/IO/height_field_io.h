@@ -7,6 +7,8 @@
 #ifndef CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_IO_HEIGHT_FIELD_IO_H
 #define CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_IO_HEIGHT_FIELD_IO_H
 
+#include <CGAL/Penrose_Delaunay_triangulation_2/IO/internal/file_names.h>
+
 #include <stb/stb_image.h>
 
 #include <algorithm>
@@ -44,19 +46,6 @@ struct Height_field
 };
 
 namespace internal {
-
-inline std::runtime_error file_error(const std::string& file, const std::string& why)
-{
-  return std::runtime_error(file + ": " + why);
-}
-
-inline std::string lowercase_extension(const std::string& file)
-{
-  const std::size_t dot = file.find_last_of('.');
-  std::string e = dot == std::string::npos ? std::string() : file.substr(dot + 1);
-  std::transform(e.begin(), e.end(), e.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  return e;
-}
 
 // The whole file, or an exception that tells why not (missing, unreadable, empty).
 inline std::string read_whole_file(const std::string& file)
@@ -178,8 +167,7 @@ inline Height_field read_ESRI_ASCII_grid(const std::string& file, std::size_t ma
     if(!std::isalpha((unsigned char)*p)) break;
     const char* k = p;
     while(std::isalpha((unsigned char)*p) || *p == '_') ++p;
-    std::string key(k, p);
-    std::transform(key.begin(), key.end(), key.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    const std::string key = internal::lowercase(std::string(k, p));
     char* end = nullptr;
     const double v = std::strtod(p, &end);
     if(end == p) throw fail("header field '" + key + "' has no numeric value");

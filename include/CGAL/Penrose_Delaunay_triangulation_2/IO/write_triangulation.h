@@ -7,7 +7,7 @@
 #ifndef CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_IO_WRITE_TRIANGULATION_H
 #define CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_IO_WRITE_TRIANGULATION_H
 
-#include <CGAL/Penrose_Delaunay_triangulation_2/IO/height_field_io.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/IO/internal/file_names.h>
 
 #include <CGAL/Handle_hash_function.h>
 #include <CGAL/IO/OBJ.h>

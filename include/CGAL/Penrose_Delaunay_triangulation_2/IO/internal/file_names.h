@@ -1,0 +1,42 @@
+// Copyright (c) 2026 The Penrose_Delaunay_triangulation_2 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// What the readers and writers of IO/ share about files: a format is chosen
+// by the file's extension, and every error names the file. Apart from the
+// readers, so that the mesh writer does not need stb_image.
+
+#ifndef CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_IO_INTERNAL_FILE_NAMES_H
+#define CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_IO_INTERNAL_FILE_NAMES_H
+
+#include <algorithm>
+#include <cctype>
+#include <stdexcept>
+#include <string>
+
+namespace CGAL {
+namespace IO {
+namespace internal {
+
+inline std::runtime_error file_error(const std::string& file, const std::string& why)
+{
+  return std::runtime_error(file + ": " + why);
+}
+
+// extensions and the keywords of text formats are not case-sensitive
+inline std::string lowercase(std::string s)
+{
+  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return s;
+}
+
+inline std::string lowercase_extension(const std::string& file)
+{
+  const std::size_t dot = file.find_last_of('.');
+  return lowercase(dot == std::string::npos ? std::string() : file.substr(dot + 1));
+}
+
+} // namespace internal
+} // namespace IO
+} // namespace CGAL
+
+#endif // CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_IO_INTERNAL_FILE_NAMES_H
