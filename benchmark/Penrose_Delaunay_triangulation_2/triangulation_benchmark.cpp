@@ -17,6 +17,11 @@
 //       included) or CGAL's range insertion of the same points (sampling not
 //       timed); run it in a loop for fresh processes, where no run inherits
 //       the allocator's warm pages
+//   triangulation_benchmark check [N=1e6] [constant|ramp]
+//       the tests' correctness checks at the bars' sizes, which the tests do
+//       not reach: is_valid(), no more fallbacks than 0.1% of the vertices,
+//       and every edge that of CGAL::Delaunay_triangulation_2 and of
+//       Triangulation_hierarchy_2 on the same points; exits 1 otherwise
 
 #include <CGAL/Penrose_Delaunay_triangulation_2.h>
 
@@ -26,8 +31,11 @@
 #include "benchmark_support.h"
 
 #include <cstdlib>
+#include <functional>
+#include <iterator>
 #include <iostream>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
@@ -157,6 +165,44 @@ static int once(double n, const std::string& input, const std::string& method)
   return 0;
 }
 
+// Whether `t` has the same number of finite edges as `pdt`, and each edge of
+// `pdt` between the same two points. Each vertex of `t` is found by its point
+// (the sampler's points are distinct), each edge by Triangulation_2::is_edge().
+template <class Triangulation>
+static bool has_the_edges_of(const Pdt& pdt, const Triangulation& t)
+{
+  if(t.number_of_vertices() != pdt.number_of_vertices()) return false;
+  auto hash = [](const Point& p) { return std::hash<double>()(p.x()) ^ (std::hash<double>()(p.y()) * 31); };
+  std::unordered_map<Point, typename Triangulation::Vertex_handle, decltype(hash)> vertex_at(t.number_of_vertices(), hash);
+  for(auto v = t.finite_vertices_begin(); v != t.finite_vertices_end(); ++v) vertex_at.emplace(v->point(), v);
+  std::size_t edges = 0;
+  for(auto e = pdt.finite_edges_begin(); e != pdt.finite_edges_end(); ++e, ++edges) {
+    const auto a = vertex_at.find(e->first->vertex(pdt.cw(e->second))->point());
+    const auto b = vertex_at.find(e->first->vertex(pdt.ccw(e->second))->point());
+    if(a == vertex_at.end() || b == vertex_at.end() || !t.is_edge(a->second, b->second)) return false;
+  }
+  return edges == std::size_t(std::distance(t.finite_edges_begin(), t.finite_edges_end()));
+}
+
+static int check(double n, const std::string& input)
+{
+  const Sampler sampler = benchmark_support::unit_square_sampler<K>(input, n);
+  const Pdt pdt(sampler);
+  std::vector<Point> points;
+  sampler(std::back_inserter(points));
+  const Dt dt(points.begin(), points.end());
+  Hierarchy hierarchy;
+  for(const Point& p : points) hierarchy.insert(p);
+  const bool valid = pdt.is_valid();
+  const bool few_fallbacks = double(pdt.number_of_fallbacks()) <= 0.001 * double(pdt.number_of_vertices());
+  const bool as_dt = has_the_edges_of(pdt, dt), as_hierarchy = has_the_edges_of(pdt, hierarchy);
+  std::cout << input << " " << n << ": " << pdt.number_of_vertices() << " vertices, " << pdt.number_of_faces()
+            << " faces, " << pdt.number_of_flips() << " flips, " << pdt.number_of_fallbacks() << " fallbacks; "
+            << "is_valid() " << (valid ? "yes" : "NO") << ", edges of Delaunay_triangulation_2 "
+            << (as_dt ? "yes" : "NO") << ", of Triangulation_hierarchy_2 " << (as_hierarchy ? "yes" : "NO") << "\n";
+  return valid && few_fallbacks && as_dt && as_hierarchy ? 0 : 1;
+}
+
 int main(int argc, char** argv)
 {
   const std::string mode = argc > 1 ? argv[1] : "speed";
@@ -166,14 +212,17 @@ int main(int argc, char** argv)
     (mode == "memory" && (arg(2, "penrose") == "penrose" || arg(2, "penrose") == "cgal") && is_size(arg(3, "1e6"))) ||
     (mode == "scaling" && benchmark_support::is_unit_square_input(arg(2, "constant"))) ||
     (mode == "once" && is_size(arg(2, "1e6")) && benchmark_support::is_unit_square_input(arg(3, "constant")) &&
-     (arg(4, "penrose") == "penrose" || arg(4, "penrose") == "cgal"));
+     (arg(4, "penrose") == "penrose" || arg(4, "penrose") == "cgal")) ||
+    (mode == "check" && is_size(arg(2, "1e6")) && benchmark_support::is_unit_square_input(arg(3, "constant")));
   if(!valid) {
     std::cerr << "usage: triangulation_benchmark speed [N] [constant|ramp] [runs] | memory penrose|cgal [N] | "
-                 "scaling [constant|ramp] | once [N] [constant|ramp] [penrose|cgal]\n";
+                 "scaling [constant|ramp] | once [N] [constant|ramp] [penrose|cgal] | "
+                 "check [N] [constant|ramp]\n";
     return 2;
   }
   if(mode == "speed") return speed(std::atof(arg(2, "1e6").c_str()), arg(3, "constant"), std::atoi(arg(4, "5").c_str()));
   if(mode == "memory") return memory(arg(2, "penrose"), std::atof(arg(3, "1e6").c_str()));
   if(mode == "scaling") return scaling(arg(2, "constant"));
+  if(mode == "check") return check(std::atof(arg(2, "1e6").c_str()), arg(3, "constant"));
   return once(std::atof(arg(2, "1e6").c_str()), arg(3, "constant"), arg(4, "penrose"));
 }
