@@ -18,13 +18,12 @@
 //           sampling             Penrose_importance_sampler alone (streaming)
 
 #include <CGAL/Penrose_Delaunay_triangulation_2.h>
-#include <CGAL/Raster_density_2.h>
-#include <CGAL/Penrose_Delaunay_triangulation_2/IO/read_luminance_image.h>
 
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include "benchmark_support.h"
+#include "figure8_inputs.h"
 
 #include <algorithm>
 #include <cmath>
@@ -43,36 +42,6 @@ typedef CGAL::Penrose_importance_sampler<K> Sampler;
 typedef CGAL::Delaunay_triangulation_2<K> Dt;
 typedef benchmark_support::Hierarchy<K> Hierarchy;
 using benchmark_support::now;
-
-// A terrain-like density: the absolute Laplacian of a few hills and ridges,
-// high on slopes' bends and low on flats, plus a floor.
-double terrain_density(const Point& p)
-{
-  static const double hills[5][4] = {{0.3, 0.3, 0.12, 1.0}, {0.7, 0.35, 0.08, 0.6}, {0.55, 0.75, 0.15, 0.8},
-                                     {0.2, 0.8, 0.05, 0.4}, {0.85, 0.85, 0.1, 0.5}};
-  double lap = 0.;
-  for(const auto& h : hills) {
-    const double dx = p.x() - h[0], dy = p.y() - h[1], s2 = h[2] * h[2];
-    const double r2 = dx * dx + dy * dy;
-    lap += h[3] * std::exp(-r2 / (2 * s2)) * (r2 - 2 * s2) / (s2 * s2);
-  }
-  return 5. + std::abs(lap + 30. * std::sin(9 * p.x()) * std::sin(7 * p.y()));
-}
-
-Sampler make_sampler(const std::string& input, double n, const std::string& image)
-{
-  const K::Iso_rectangle_2 unit(0, 0, 1, 1);
-  const auto np = benchmark_support::sampling_parameters(n);
-  if(input == "terrain") return Sampler(unit, terrain_density, np);
-  if(input == "image") {
-    CGAL::IO::Luminance_image img = CGAL::IO::read_luminance_image(image);
-    for(double& v : img.values) v += 0.02;  // dark regions get a few points too
-    auto d = std::make_shared<CGAL::Raster_density_2<K>>(img.width, img.height, std::move(img.values), unit);
-    return Sampler(unit, [d](const Point& p) { return (*d)(p); },
-      CGAL::parameters::density_upper_bound([d](const K::Iso_rectangle_2& b) { return d->upper_bound(b); }, np));
-  }
-  return benchmark_support::unit_square_sampler<K>(input, n);
-}
 
 // Runs `method` on the points; returns the number of vertices it made.
 std::size_t run(const std::string& method, const Sampler& sampler, const std::vector<Point>& points)
@@ -123,7 +92,7 @@ int main(int argc, char** argv)
   const int repetitions = std::max(1, std::atoi(argv[4]));
   const std::string image = argc > 5 ? argv[5] : "data/test_image.png";
   try {
-    const Sampler sampler = make_sampler(input, n, image);
+    const Sampler sampler = benchmark_support::figure8_sampler<K>(input, n, image);
     std::vector<Point> points;
     sampler(std::back_inserter(points));
     const double before = benchmark_support::peak_resident_bytes();

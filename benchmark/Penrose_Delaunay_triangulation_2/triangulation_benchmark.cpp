@@ -17,11 +17,12 @@
 //       included) or CGAL's range insertion of the same points (sampling not
 //       timed); run it in a loop for fresh processes, where no run inherits
 //       the allocator's warm pages
-//   triangulation_benchmark check [N=1e6] [constant|ramp]
+//   triangulation_benchmark check [N=1e6] [constant|ramp|image|terrain] [IMAGE=data/test_image.png]
 //       the tests' correctness checks at the bars' sizes, which the tests do
-//       not reach: is_valid(), no more fallbacks than 0.1% of the vertices,
-//       and every edge that of CGAL::Delaunay_triangulation_2 and of
-//       Triangulation_hierarchy_2 on the same points; exits 1 otherwise
+//       not reach, on the inputs of Figure 8: is_valid(), no more fallbacks
+//       than 0.1% of the vertices, and every edge that of
+//       CGAL::Delaunay_triangulation_2 and of Triangulation_hierarchy_2 on
+//       the same points; exits 1 otherwise
 
 #include <CGAL/Penrose_Delaunay_triangulation_2.h>
 
@@ -29,10 +30,12 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include "benchmark_support.h"
+#include "figure8_inputs.h"
 
 #include <cstdlib>
 #include <functional>
 #include <iterator>
+#include <stdexcept>
 #include <iostream>
 #include <string>
 #include <unordered_map>
@@ -184,9 +187,9 @@ static bool has_the_edges_of(const Pdt& pdt, const Triangulation& t)
   return edges == std::size_t(std::distance(t.finite_edges_begin(), t.finite_edges_end()));
 }
 
-static int check(double n, const std::string& input)
+static int check(double n, const std::string& input, const std::string& image)
 {
-  const Sampler sampler = benchmark_support::unit_square_sampler<K>(input, n);
+  const Sampler sampler = benchmark_support::figure8_sampler<K>(input, n, image);
   const Pdt pdt(sampler);
   std::vector<Point> points;
   sampler(std::back_inserter(points));
@@ -213,16 +216,23 @@ int main(int argc, char** argv)
     (mode == "scaling" && benchmark_support::is_unit_square_input(arg(2, "constant"))) ||
     (mode == "once" && is_size(arg(2, "1e6")) && benchmark_support::is_unit_square_input(arg(3, "constant")) &&
      (arg(4, "penrose") == "penrose" || arg(4, "penrose") == "cgal")) ||
-    (mode == "check" && is_size(arg(2, "1e6")) && benchmark_support::is_unit_square_input(arg(3, "constant")));
+    (mode == "check" && is_size(arg(2, "1e6")) && benchmark_support::is_figure8_input(arg(3, "constant")));
   if(!valid) {
     std::cerr << "usage: triangulation_benchmark speed [N] [constant|ramp] [runs] | memory penrose|cgal [N] | "
                  "scaling [constant|ramp] | once [N] [constant|ramp] [penrose|cgal] | "
-                 "check [N] [constant|ramp]\n";
+                 "check [N] [constant|ramp|image|terrain] [IMAGE]\n";
     return 2;
   }
   if(mode == "speed") return speed(std::atof(arg(2, "1e6").c_str()), arg(3, "constant"), std::atoi(arg(4, "5").c_str()));
   if(mode == "memory") return memory(arg(2, "penrose"), std::atof(arg(3, "1e6").c_str()));
   if(mode == "scaling") return scaling(arg(2, "constant"));
-  if(mode == "check") return check(std::atof(arg(2, "1e6").c_str()), arg(3, "constant"));
+  if(mode == "check") {
+    try {
+      return check(std::atof(arg(2, "1e6").c_str()), arg(3, "constant"), arg(4, "data/test_image.png"));
+    } catch(const std::exception& e) {  // an unreadable image
+      std::cerr << "triangulation_benchmark: " << e.what() << "\n";
+      return 2;
+    }
+  }
   return once(std::atof(arg(2, "1e6").c_str()), arg(3, "constant"), arg(4, "penrose"));
 }
