@@ -6,8 +6,10 @@
 #
 # --quick: sizes up to 10^5 (under a minute); default: 10^3 to 4 x 10^6.
 # --out:   where results.csv, the plots and the quality report go (default benchmark-results).
-# Installs what is missing (Debian packages), builds in Release, runs every
-# (input, size, method) in its own process, and draws the plots with gnuplot.
+# Installs what is missing (Debian packages), builds in Release, checks the
+# triangulation against CGAL's on each input at 10^6 points (10^5 with
+# --quick; check.txt), runs every (input, size, method) in its own process,
+# and draws the plots with gnuplot.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 
@@ -28,12 +30,19 @@ bash .ci/install-dependencies gnuplot-nox
 build=build-benchmarks
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DPENROSE_BUILD_BENCHMARKS=ON -DBUILD_TESTING=OFF \
       -DPENROSE_BUILD_EXAMPLES=OFF >/dev/null
-cmake --build "$build" -j2 --target figure8_benchmark sample_quality_report >/dev/null
+cmake --build "$build" -j2 --target figure8_benchmark triangulation_benchmark sample_quality_report >/dev/null
 bin="$build/benchmark/Penrose_Delaunay_triangulation_2"
 
 if [ $quick = 1 ]; then sizes="1000 3000 10000 30000 100000"; else sizes="1000 3000 10000 30000 100000 300000 1000000 2000000 4000000"; fi
 inputs="constant ramp image terrain"
 methods="cgal_range incremental hierarchy hierarchy_range penrose sampling"
+target=$([ $quick = 1 ] && echo 100000 || echo 1000000)
+
+# the timings below are of correct triangulations: equal, edge for edge, to CGAL's
+: > "$out/check.txt"
+for input in $inputs; do
+  "$bin/triangulation_benchmark" check "$target" "$input" data/test_image.png | tee -a "$out/check.txt"
+done
 
 raw="$out/raw.csv"
 : > "$raw"
@@ -73,8 +82,7 @@ awk -F, 'BEGIN { OFS = "," }
     }
   }' "$raw" > "$csv"
 
-# the table of ratios at the largest size near 10^6
-target=$([ $quick = 1 ] && echo 100000 || echo 1000000)
+# the table of ratios at the size of the checks
 {
   echo "| input | N | method | median s | ns/point | ratio to CGAL range insertion | peak bytes/point |"
   echo "|---|---|---|---|---|---|---|"
