@@ -152,4 +152,4 @@ plot '$out/quality_corrected_angles.csv' every ::1 using 1:2 with boxes title 'w
      '$out/quality_raw_angles.csv' every ::1 using 1:2 with boxes title 'raw tile vertices'
 EOF
 
-echo "results: $csv, $out/ratios.md, $out/*.png, $out/quality_*_summary.txt"
+echo "results: $out/check.txt, $csv, $out/ratios.md, $out/*.png, $out/quality_*_summary.txt"
