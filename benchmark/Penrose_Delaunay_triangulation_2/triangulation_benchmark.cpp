@@ -34,9 +34,9 @@
 
 #include <cstdlib>
 #include <functional>
+#include <iostream>
 #include <iterator>
 #include <stdexcept>
-#include <iostream>
 #include <string>
 #include <unordered_map>
 #include <vector>
