@@ -97,7 +97,12 @@ calling thread.
 A construction that would not fit in the machine's memory (its peak is
 about 220 bytes per point with the default TDS), or that has more than
 about \f$1.7 \times 10^9\f$ points, is refused before anything is allocated:
-the constructors and `build()` throw `std::length_error`.
+the constructors and `build()` throw `std::length_error`. The base mesh
+follows the tile tree rather than the points, and a `density_upper_bound`
+far above the density refines tiles that hold no point: a mesh that would
+then outgrow the machine's memory (about 520 bytes per vertex, once it has
+outgrown what was reserved for the points) or its 32-bit indices is refused
+in the same way before it grows, and the triangulation is left empty.
 
 On Linux, the blocks of the internal mesh (on transparent huge pages) are
 kept after a construction for the next one of the same size, about 65 bytes
@@ -196,7 +201,8 @@ public:
   \return `false` if `callback` stopped the construction, `true` otherwise.
   \throws std::length_error, leaving the triangulation as it was, if the
   construction would need more memory than the machine has, or more than
-  about \f$1.7 \times 10^9\f$ points.
+  about \f$1.7 \times 10^9\f$ points; leaving it empty, if its base mesh
+  would outgrow them.
   \throws what sampling throws (a bad density, tiles too fine for the
   coordinates: see `Penrose_importance_sampler`), leaving the triangulation
   empty.

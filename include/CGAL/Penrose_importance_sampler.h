@@ -43,6 +43,18 @@ count instead.
 The sampler is deterministic: the same region, density and parameters give
 the same points, bit for bit.
 
+Sampling (`operator()`, `samples()`, `tile_tree()` and the constructions of
+`Penrose_Delaunay_triangulation_2`) throws `std::invalid_argument`, naming
+the point and the value, where the density is negative, NaN or infinite,
+or where, scaled, it exceeds what the 30 levels of the tile tree can
+represent: about \f$4 \times 10^{11} / L^2\f$ points per unit area, \f$L\f$
+being the longer side of the region (about \f$4 \times 10^{11}\f$ points in
+a square region, \f$k\f$ times fewer in a region \f$k\f$ times longer than
+wide). `tile_tree()` throws `std::length_error` before its arrays would
+outgrow the machine's memory or their 32-bit indices, which a
+`density_upper_bound` far above the density can cause: it refines tiles
+that hold no point.
+
 \tparam Traits a model of `PenroseImportanceSamplerTraits_2`; the default is
 `Exact_predicates_inexact_constructions_kernel`, and every CGAL kernel is a model.
 

@@ -485,6 +485,11 @@ TEST(Triangulation, RefusesWhatCannotFit)
   EXPECT_NO_THROW(check_construction_size(1e7, 200., 0.));  // memory unknown
   EXPECT_THROW(check_construction_size(2e9, 200., 0.), std::length_error);  // 32-bit indices
   EXPECT_NO_THROW(check_construction_size(1.5e9, 200., 0.));
+  using CGAL::internal::Penrose::check_growth;
+  EXPECT_THROW(check_growth(1e6, 2e6, 500., 0.25 * gib, "", "", ""), std::length_error);
+  EXPECT_NO_THROW(check_growth(1e6, 2e6, 500., 1. * gib, "", "", ""));
+  EXPECT_NO_THROW(check_growth(1e6, 2e6, 500., 0., "", "", ""));  // memory unknown
+  EXPECT_THROW(check_growth(2e6, 2e6, 0., 0., "", "", ""), std::length_error);
 
   // 10^10 points: refused before any allocation, the triangulation untouched
   CGAL::Penrose_Delaunay_triangulation_2<Epick> pdt(
@@ -496,11 +501,46 @@ TEST(Triangulation, RefusesWhatCannotFit)
     pdt.build(huge, [](double x, double y) { return Point(x, y); });
     ADD_FAILURE() << "10^10 points were not refused";
   } catch(const std::length_error& e) {
-    EXPECT_NE(std::string(e.what()).find("about 1e+10 points are more than its 32-bit indices allow"), std::string::npos)
+    EXPECT_NE(std::string(e.what()).find("about 1e+10 points: more than its 32-bit indices allow"), std::string::npos)
       << e.what();
   }
   EXPECT_TRUE(pdt.is_valid());
   EXPECT_TRUE(edge_set(pdt, xy_of) == before);
+}
+
+TEST(Internals, BaseMeshThatWouldOutgrowMemoryIsRefusedBeforeItGrows)
+{
+  // a density bound 64 times the density refines tiles that hold no point,
+  // and the mesh outgrows what was reserved for the points: a builder
+  // allowed 64 MiB refuses to grow it past them, with its
+  // helper thread and without (2^16 points and up), and a mesh that stays
+  // within what was reserved is not refused
+  using CGAL::internal::Penrose::Base_triangulation_builder;
+  using CGAL::internal::Penrose::Flat_mesh;
+  const double budget = 64. * (1 << 20);
+  auto one = [](const Point&) { return 1.; };
+  auto loose = [](const Epick::Iso_rectangle_2&) { return 64.; };
+  for(std::size_t n : {std::size_t(20000), std::size_t(100000)}) {
+    const Sampler s(unit_square, one,
+                    CGAL::parameters::density_upper_bound(loose, CGAL::parameters::number_of_output_points(n)));
+    Flat_mesh mesh;
+    Base_triangulation_builder builder(s.context(), mesh, false, budget);
+    std::string message = "not refused";
+    try {
+      builder.build(s.expected_number_of_points(), std::function<bool(double)>());
+    } catch(const std::length_error& e) {
+      message = e.what();
+    }
+    EXPECT_NE(message.find("the base mesh would grow to about"), std::string::npos) << n << ": " << message;
+    EXPECT_NE(message.find("GiB of this machine"), std::string::npos) << n << ": " << message;
+    EXPECT_LT(520. * double(mesh.points.size()), budget) << n;
+
+    const Sampler tight(unit_square, one, CGAL::parameters::number_of_output_points(n));
+    Flat_mesh fitting;
+    EXPECT_TRUE(Base_triangulation_builder(tight.context(), fitting, false, budget)
+                  .build(tight.expected_number_of_points(), std::function<bool(double)>())) << n;
+    EXPECT_GT(fitting.points.size(), n / 2) << n;
+  }
 }
 
 TEST(Triangulation, FewPointsHaveCgalsDimension)

@@ -20,6 +20,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <random>
 #include <set>
@@ -347,14 +348,42 @@ TEST(Sampler, RejectsBadRegionsAndParameters)
                std::invalid_argument);
   // so many points that they would exhaust memory: refused before anything is allocated
   EXPECT_THROW(Sampler(unit_square, [](const Point&) { return 1e300; }), std::length_error);
-  // a density that needs more than the 30 levels of the tree (the count guard raised)
-  const std::string m = message_of_invalid_argument([] {
-    Sampler s(unit_square, [](const Point& p) { return p.x() < 0.2 ? 1e13 : 1.; },
-              CGAL::parameters::maximum_number(std::size_t(1e13)));
-    std::vector<Point> p;
-    s(std::back_inserter(p));
-  });
-  EXPECT_NE(m.find("levels of the tile tree"), std::string::npos) << m;
+}
+
+TEST(Sampler, RefusesDensitiesBeyondItsLevelsAsDocumented)
+{
+  // the documented limit, about 4 x 10^11 / L^2 points per unit area (L the
+  // region's longer side), whatever the aspect ratio: a half disk on the
+  // region's border of density just under it is sampled, one just over it
+  // refused, naming a point of the region where the density was evaluated
+  // (not the tile vertex outside it)
+  for(const auto& [length, height] : {std::make_pair(1., 1.), std::make_pair(2., 0.02)}) {
+    const double limit = 4e11 / (length * length);
+    for(const double factor : {0.95, 1.05}) {
+      const double peak = factor * limit, radius = 100 / std::sqrt(peak), cx = 0.3 * length, cy = 0.;
+      auto in_disk = [=](double x, double y) { return (x - cx) * (x - cx) + (y - cy) * (y - cy) <= radius * radius; };
+      auto density = [=](const Point& p) { return in_disk(p.x(), p.y()) ? peak : 1.; };
+      auto bound = [=](const Epick::Iso_rectangle_2& b) {
+        return in_disk((std::min)((std::max)(cx, b.xmin()), b.xmax()), (std::min)((std::max)(cy, b.ymin()), b.ymax()))
+                 ? peak : 1.;
+      };
+      const Sampler s(Epick::Iso_rectangle_2(0, 0, length, height), density,
+                      CGAL::parameters::density_upper_bound(bound, CGAL::parameters::maximum_number(std::size_t(1e13))));
+      std::vector<Point> points;
+      const std::string m = message_of_invalid_argument([&] { s(std::back_inserter(points)); });
+      const std::string what = std::to_string(length) + " x " + std::to_string(height) + ", " + std::to_string(factor);
+      if(factor < 1) {
+        EXPECT_EQ(m, "no std::invalid_argument thrown") << what;
+        const double in_disk_points = peak * 3.14159265358979 * radius * radius / 2;  // 15,708; the rest 1 per unit area
+        EXPECT_NEAR(double(points.size()), in_disk_points, 0.03 * in_disk_points) << what;
+        continue;
+      }
+      EXPECT_NE(m.find("levels of the tile tree"), std::string::npos) << what << ": " << m;
+      double x = -1, y = -1;
+      ASSERT_EQ(std::sscanf(m.c_str(), "Penrose_importance_sampler: the density at (%lf, %lf)", &x, &y), 2) << m;
+      EXPECT_TRUE(x >= 0 && x <= length && y >= 0 && y <= height) << what << ": " << m;
+    }
+  }
 }
 
 TEST(Sampler, RefusesTilesFinerThanItsCoordinatesResolve)

@@ -35,6 +35,7 @@
 #include <CGAL/Penrose_Delaunay_triangulation_2/internal/Huge_page_allocator.h>
 #include <CGAL/Penrose_Delaunay_triangulation_2/internal/Lookahead_worker.h>
 #include <CGAL/Penrose_Delaunay_triangulation_2/internal/Sampling_context.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Size_limits.h>
 #include <CGAL/Penrose_Delaunay_triangulation_2/internal/Split_patterns.h>
 #include <CGAL/Penrose_Delaunay_triangulation_2/internal/Two_halves.h>
 
@@ -44,8 +45,11 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <iomanip>
 #include <limits>
 #include <memory>
+#include <sstream>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -59,9 +63,11 @@ public:
   typedef Flat_mesh::Index Index;
   static constexpr Index null = Flat_mesh::null;
 
-  // `record_births`: keep what sample() needs (for vertex visitors only).
-  Base_triangulation_builder(const Sampling_context& context, Flat_mesh& mesh, bool record_births = false)
-    : c_(context), m_(mesh), record_births_(record_births)
+  // `record_births`: keep what sample() needs (for vertex visitors only);
+  // `memory`: the bytes that the mesh may take (0: not checked).
+  Base_triangulation_builder(const Sampling_context& context, Flat_mesh& mesh, bool record_births = false,
+                             double memory = physical_memory_bytes())
+    : c_(context), m_(mesh), record_births_(record_births), memory_(memory)
   {}
 
   // Where each vertex of the mesh goes: its corrected position if it is an
@@ -88,6 +94,7 @@ public:
   // the build stops, returning false, as soon as it returns false.
   bool build(double expected_points, const std::function<bool(double)>& progress)
   {
+    expected_points_ = expected_points;
     const std::size_t n = vertex_capacity(expected_points);
     m_.points.reserve(n); m_.vertex_face.reserve(n);
     importance_.reserve(n); target_.reserve(n);
@@ -199,6 +206,25 @@ private:
     bool kept;
     std::uint8_t refined_children;           // bit c: child c
   };
+
+  // Where a density bound far above the density refines tiles that hold no
+  // sample, the mesh follows the tiles, not the points, and outgrows what
+  // was reserved for them: its arrays then grow by doubling, and the peak
+  // was 219 to 514 bytes per vertex (constant density under bounds 2 to 256
+  // times too high, 3 x 10^4 to 10^7 vertices).
+  static constexpr double bytes_per_vertex_beyond_reservation = 520.;
+
+  // Throws std::length_error before the mesh's arrays double, if twice as
+  // many vertices would overflow its indices (at most two faces per vertex)
+  // or the machine's memory.
+  void check_room_to_double() const
+  {
+    std::ostringstream units;
+    units << " vertices, for about " << std::setprecision(3) << expected_points_ << " points";
+    check_growth(2. * double(m_.points.size()), 0.5 * double(null), bytes_per_vertex_beyond_reservation, memory_,
+                 "Penrose_Delaunay_triangulation_2: the base mesh would grow to about ", units.str(),
+                 overrefinement_hint);
+  }
 
   // Below this many points a helper thread costs more than it saves.
   static constexpr double least_points_for_helper = double(std::size_t(1) << 16);
@@ -588,8 +614,10 @@ private:
   Index add_new_vertex(std::size_t k, int n, double importance, Lookahead_worker& helper)
   {
     // the helper's surveys read the points and importances: they must not move under it
-    if(m_.points.size() == m_.points.capacity() || importance_.size() == importance_.capacity())
+    if(m_.points.size() == m_.points.capacity() || importance_.size() == importance_.capacity()) {
+      check_room_to_double();
       if(helper.running()) helper.wait_for_all();
+    }
     const Tile& t = frontier_[k];
     const New_vertex_rule& nv = rule(t.tile_type()).new_vertices[n];
     const int e = nv.edge;
@@ -720,6 +748,8 @@ private:
   const Sampling_context& c_;
   Flat_mesh& m_;
   const bool record_births_;
+  const double memory_;
+  double expected_points_ = 0.;
   // The builder's own arrays are on small pages, unlike the mesh's: they
   // serve this build only, and fresh huge pages may cost a host fault each on
   // a virtual machine (see Huge_page_allocator.h).

@@ -24,7 +24,8 @@ namespace internal {
 namespace Penrose {
 
 // Two bits per level in a 64-bit code, and thresholds that stay exact in a
-// double (F(2 * 30 + 1) < 2^53): 30 levels hold about 10^12 points per region.
+// double (F(2 * 30 + 1) < 2^53): 30 levels hold about 4 x 10^11 points in a
+// square region, 4 x 10^11 / L^2 per unit area (L the region's longer side).
 constexpr int max_level = 30;
 
 struct Fibonacci_tables

@@ -75,7 +75,8 @@ public:
     // C.8: samples per unit area = importance / root_scale^2 * sqrt 5 / (phi^4 sin36 + phi sin72)
     const double deg = 3.14159265358979323846 / 180.;
     const double k = std::sqrt(5.) / (std::pow(phi, 4) * std::sin(36 * deg) + phi * std::sin(72 * deg));
-    importance_per_density_ = points_per_density_unit * root_scale_ * root_scale_ / k;
+    importance_per_point_density_ = root_scale_ * root_scale_ / k;
+    importance_per_density_ = points_per_density_unit * importance_per_point_density_;
     const Direction_table& u = directions();
     root_x_[0] = xmin - root_scale_ * (phi * phi / 2. - 0.25);
     root_y_[0] = ymin - root_scale_ / 8.;
@@ -122,7 +123,7 @@ public:
   double importance(double x, double y) const
   {
     const double i = density(x, y) * importance_per_density_;
-    if(!(i < max_importance_)) throw_too_dense(x, y, i / importance_per_density_);
+    if(!(i < max_importance_)) throw_too_dense(clamp_x(x), clamp_y(y), i);
     return i;
   }
 
@@ -219,12 +220,17 @@ private:
     throw std::invalid_argument(msg.str());
   }
 
-  [[noreturn]] void throw_too_dense(double x, double y, double v) const
+  // (x, y): where the density was evaluated
+  [[noreturn]] void throw_too_dense(double x, double y, double importance) const
   {
     std::ostringstream msg;
     msg.precision(17);
-    msg << "Penrose_importance_sampler: the density at (" << x << ", " << y << ") is " << v
-        << ", more than the " << max_level << " levels of the tile tree can represent";
+    msg << "Penrose_importance_sampler: the density at (" << x << ", " << y << ") is "
+        << importance / importance_per_density_;
+    msg.precision(3);
+    msg << ", scaled to " << importance / importance_per_point_density_ << " points per unit area: more than the "
+        << max_importance_ / importance_per_point_density_ << " that the " << max_level
+        << " levels of the tile tree can represent in this region";
     throw std::invalid_argument(msg.str());
   }
 
@@ -269,6 +275,7 @@ private:
   Density_bound bound_;
   const Correction_table* table_;
   double root_scale_;
+  double importance_per_point_density_;  // of a density of one point per unit area
   double importance_per_density_;
   double margin_factor_;
   double largest_coordinate_;  // of the region and the root tile
