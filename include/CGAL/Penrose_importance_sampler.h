@@ -99,7 +99,7 @@ public:
 
   \cgalNamedParamsBegin
     \cgalParamNBegin{number_of_output_points}
-      \cgalParamDescription{the number of points wanted: the density is scaled so that its integral over the region is this number}
+      \cgalParamDescription{the number of points wanted: the density is scaled so that its integral over the region is this number. The integral is estimated by the midpoint rule on a 512 x 512 grid over the region, the same whatever `density_upper_bound`, so that the bound changes which tiles are visited and never the points: a feature narrower than a grid cell may be missed by the estimate, and the count then differs from the number asked for (scale with `density_control_factor` instead)}
       \cgalParamType{`std::size_t`}
       \cgalParamDefault{the integral of the density}
     \cgalParamNEnd
