@@ -188,11 +188,16 @@ public:
   /// @}
 
   /*!
-  Clears the triangulation and builds that of the points of `sampler`, each
-  made by `lift(x, y)`. `on_vertex(v, sample)` is called for every vertex
-  created, with the `Penrose_importance_sampler::Sample` it comes from, for
-  instance to fill the info of a vertex base with info.
+  Clears the triangulation and builds that of the points of `sampler`.
 
+  \tparam Lift a callable `Point(double x, double y)`.
+  \tparam OnVertex a callable `void(Vertex_handle v, const Penrose_importance_sampler<SamplerTraits>::Sample& sample)`.
+
+  \param sampler the sampler whose points are triangulated.
+  \param lift makes the point of each sample from its coordinates, for
+         instance a 3D point with a height for `Projection_traits_xy_3`.
+  \param on_vertex called for every vertex created, with the sample it
+         comes from, for instance to fill the info of a vertex base with info.
   \param np an optional sequence of named parameters among:
     - `callback`: a `std::function<bool(double)>`, called regularly with the
       advancement of the construction, in [0, 1]; if it returns `false`, the

@@ -95,6 +95,10 @@ public:
   \tparam Density a callable `double(const Point_2&)` (any return type
           convertible with `CGAL::to_double()`); it is evaluated inside the
           closed region only.
+  \param region the rectangle sampled; it must have a positive area.
+  \param density the density, in points per unit area up to the scaling
+         of `number_of_output_points` and `density_control_factor`: finite
+         and non-negative.
   \param np an optional sequence of named parameters among the ones below.
 
   \cgalNamedParamsBegin

@@ -144,6 +144,7 @@ inline Pnm read_pnm(const std::string& file, const std::string& bytes, std::size
 } // namespace internal
 
 /*!
+\ingroup PkgPenroseDelaunayTriangulation2IO
 Reads an ESRI ASCII grid (`.asc`): the header `ncols`, `nrows`,
 `xllcorner` or `xllcenter`, `yllcorner` or `yllcenter`, `cellsize` and the
 optional `NODATA_value`, then `nrows` rows of `ncols` heights from the north.
@@ -218,6 +219,7 @@ inline Height_field read_ESRI_ASCII_grid(const std::string& file, std::size_t ma
 }
 
 /*!
+\ingroup PkgPenroseDelaunayTriangulation2IO
 Reads a grey PNG or PGM image (16 or 8 bits per sample) as heights: the raw
 sample values (0 to 65535, or 0 to 255), one pixel a unit square, the image
 over the rectangle [0, width] x [0, height].
@@ -258,6 +260,7 @@ inline Height_field read_height_image(const std::string& file, std::size_t max_c
   return hf;
 }
 
+/// \ingroup PkgPenroseDelaunayTriangulation2IO
 /// Reads a height field, by the file's extension: `.asc` with
 /// `read_ESRI_ASCII_grid()`, anything else with `read_height_image()`.
 inline Height_field read_height_field(const std::string& file, std::size_t max_cells = std::size_t(1) << 28)
@@ -334,6 +337,7 @@ inline std::string zlib_stored(const std::string& raw)
 
 } // namespace internal
 
+/// \ingroup PkgPenroseDelaunayTriangulation2IO
 /// Writes `hf` as a 16-bit binary PGM (P5), heights rounded and clamped to [0, 65535].
 /// \throws std::runtime_error if the file cannot be written.
 inline void write_PGM_16(const std::string& file, const Height_field& hf)
@@ -342,6 +346,7 @@ inline void write_PGM_16(const std::string& file, const Height_field& hf)
                               + "\n65535\n" + internal::big_endian_samples(hf));
 }
 
+/// \ingroup PkgPenroseDelaunayTriangulation2IO
 /// Writes `hf` as a 16-bit grey PNG, heights rounded and clamped to [0, 65535].
 /// \throws std::runtime_error if the file cannot be written.
 inline void write_PNG_16(const std::string& file, const Height_field& hf)
@@ -363,6 +368,7 @@ inline void write_PNG_16(const std::string& file, const Height_field& hf)
   internal::write_bytes(file, png);
 }
 
+/// \ingroup PkgPenroseDelaunayTriangulation2IO
 /// Writes `hf` as an ESRI ASCII grid, heights in full precision.
 /// \throws std::runtime_error if the file cannot be written.
 inline void write_ESRI_ASCII_grid(const std::string& file, const Height_field& hf)
@@ -380,6 +386,7 @@ inline void write_ESRI_ASCII_grid(const std::string& file, const Height_field& h
   internal::write_bytes(file, s);
 }
 
+/// \ingroup PkgPenroseDelaunayTriangulation2IO
 /// Writes `hf` by the file's extension: `.asc`, `.png` or `.pgm`.
 /// \throws std::runtime_error on another extension or if the file cannot be written.
 inline void write_height_field(const std::string& file, const Height_field& hf)

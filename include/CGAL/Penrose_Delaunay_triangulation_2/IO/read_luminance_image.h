@@ -17,6 +17,7 @@
 namespace CGAL {
 namespace IO {
 
+/// \ingroup PkgPenroseDelaunayTriangulation2IO
 /// A raster of non-negative values, row 0 at the top.
 struct Luminance_image
 {
@@ -25,6 +26,7 @@ struct Luminance_image
   bool high_dynamic_range = false;  ///< read from a Radiance .hdr file (linear radiance)
 };
 
+/// \ingroup PkgPenroseDelaunayTriangulation2IO
 /// Reads `file` and converts it to luminance (Rec. 709 weights): in [0, 1]
 /// for 8- and 16-bit images, in linear radiance for .hdr files.
 /// \throws std::runtime_error naming the file and the problem.

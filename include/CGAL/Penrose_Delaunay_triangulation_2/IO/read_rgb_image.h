@@ -37,6 +37,7 @@ struct Rgb_image
 };
 
 /*!
+\ingroup PkgPenroseDelaunayTriangulation2IO
 Reads `file` as colours: in [0, 1] for 8- and 16-bit images (grey images give
 three equal channels), in linear radiance for .hdr files.
 
@@ -79,6 +80,7 @@ inline Rgb_image read_rgb_image(const std::string& file, std::size_t max_pixels 
   return img;
 }
 
+/// \ingroup PkgPenroseDelaunayTriangulation2IO
 /// The luminance of each pixel of `rgb` (Rec. 709 weights), at least 0, row
 /// after row.
 inline std::vector<double> luminance(const Rgb_image& rgb)

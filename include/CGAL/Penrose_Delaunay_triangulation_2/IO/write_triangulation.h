@@ -89,6 +89,7 @@ void write_triangulation(const std::string& file, const Triangulation& t, const 
   if(!ok) throw internal::file_error(file, "cannot write");
 }
 
+/// \ingroup PkgPenroseDelaunayTriangulation2IO
 /// Writes `t` as `write_triangulation(file, t, vertices)` does, with the
 /// vertices in the order of `t.finite_vertex_handles()`.
 template <class Triangulation>
