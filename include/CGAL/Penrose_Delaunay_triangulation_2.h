@@ -129,10 +129,19 @@ class Penrose_Delaunay_triangulation_2
   typedef Flat_mesh::Index Index;
 
 public:
+  /// \name Types
+  /// Besides those of `Delaunay_triangulation_2<Gt, Tds>`:
+  /// @{
+
+  /// The traits, `Gt`.
   typedef typename Base::Geom_traits Geom_traits;
+  /// The triangulation data structure, `Tds` or its default.
   typedef typename Base::Triangulation_data_structure Triangulation_data_structure;
+  /// The point type of the traits.
   typedef typename Base::Point Point;
+  /// A handle to a vertex.
   typedef typename Base::Vertex_handle Vertex_handle;
+  /// A handle to a face.
   typedef typename Base::Face_handle Face_handle;
 
   /// What the construction did.
@@ -144,6 +153,7 @@ public:
     std::size_t flips = 0;            ///< Lawson flips
     std::size_t fallbacks = 0;        ///< points or vertices left to `insert()` / `remove()`
   };
+  /// @}
 
   /// \name Creation
   /// @{
@@ -290,6 +300,9 @@ public:
     return proceed(1.) || abandon();
   }
 
+  /// Clears the triangulation and builds that of the points of `sampler`,
+  /// each made by `lift(x, y)`, as `build(sampler, lift, on_vertex)` does
+  /// with a visitor that does nothing.
   template <class SamplerTraits, class Lift>
   bool build(const Penrose_importance_sampler<SamplerTraits>& sampler, const Lift& lift)
   {
@@ -304,9 +317,18 @@ public:
   }
 
   /// \name Statistics of the construction
+  /// Those of the last construction or call to `build()`, carried by copies
+  /// and swaps; zero if there was none. The operations of
+  /// `Delaunay_triangulation_2`, `insert()`, `remove()` and `clear()` among
+  /// them, leave them as they are.
   /// @{
+
+  /// What the last construction did.
   const Construction_statistics& construction_statistics() const { return stats_; }
+  /// The Lawson flips that made the triangulation Delaunay.
   std::size_t number_of_flips() const { return stats_.flips; }
+  /// The points inserted and the vertices removed with `insert()` and
+  /// `remove()` because local repair could not place them.
   std::size_t number_of_fallbacks() const { return stats_.fallbacks; }
   /// @}
 

@@ -67,9 +67,14 @@ class Penrose_importance_sampler
 public:
   /// \name Types
   /// @{
+
+  /// The traits, a model of `PenroseImportanceSamplerTraits_2`.
   typedef Traits Geom_traits;
+  /// The number type of the traits.
   typedef typename Traits::FT FT;
+  /// The point type of the traits, the type of the samples and of the density's argument.
   typedef typename Traits::Point_2 Point_2;
+  /// The type of the region.
   typedef typename Traits::Iso_rectangle_2 Iso_rectangle_2;
 
   /// A sample with the data of its leaf tile.
@@ -239,7 +244,10 @@ public:
 
   /// \name Access
   /// @{
+
+  /// The region sampled.
   const Iso_rectangle_2& region() const { return region_; }
+  /// The traits.
   const Traits& geom_traits() const { return traits_; }
   /// The factor applied to the density (from `number_of_output_points` and `density_control_factor`).
   double density_scale() const { return density_scale_; }
@@ -247,6 +255,7 @@ public:
   double density_integral() const { return integral_; }
   /// The expected number of points: the integral of the scaled density.
   double expected_number_of_points() const { return expected_; }
+  /// Whether the samples are moved by their correction vectors (named parameter `use_correction_vectors`).
   bool uses_correction_vectors() const { return context_->correction_table() != nullptr; }
   /// The shared sampling context (advanced).
   const internal::Penrose::Sampling_context& context() const { return *context_; }

@@ -37,25 +37,34 @@ vertex flagged with the data of the A tile born there.
 class Penrose_tile_tree
 {
 public:
+  /// \name Types
+  /// @{
+
+  /// The index of a tile in `tiles()` or of a vertex in `vertices()`.
   typedef std::uint32_t Index;
+  /// No tile: across the root's boundary.
   static constexpr Index null_index = 0xffffffffu;
+  /// The four triangular tile types of the 2004 system: two skinny (C, D) and two fat (E, F).
   typedef internal::Penrose::Tile_type Tile_type;
 
+  /// A triangular tile.
   struct Tile
   {
-    std::uint64_t f_code;
+    std::uint64_t f_code;            ///< the tile's F-code, its path from the root, two bits a level
     std::array<Index, 3> vertices;   ///< counter-clockwise; edge i runs from vertex i to vertex i+1
     std::array<Index, 3> neighbors;  ///< tile across edge i, or `null_index` on the root's boundary
     Index first_child;               ///< children are consecutive
-    Tile_type type;
-    std::uint8_t direction;
-    std::uint8_t level;
-    std::uint8_t number_of_children;
+    Tile_type type;                  ///< its type
+    std::uint8_t direction;          ///< its orientation, in steps of 18 degrees counter-clockwise from North
+    std::uint8_t level;              ///< its level, 0 for the root
+    std::uint8_t number_of_children; ///< 0 for a leaf
   };
 
+  /// A vertex of the tiles.
   struct Vertex
   {
-    double x, y;
+    double x;                               ///< abscissa, before any correction
+    double y;                               ///< ordinate, before any correction
     double importance;                      ///< at the nearest point of the region
     internal::Penrose::Sample_birth birth;  ///< valid when `is_sample`
     bool is_sample;                         ///< an A tile is born here
@@ -70,17 +79,30 @@ public:
 
   /// \name Levels and tiles
   /// @{
+
+  /// The number of levels, the root's included.
   int number_of_levels() const { return int(level_begin_.size()) - 1; }
+  /// The first tile of level `l`: the tiles of a level are consecutive.
   Index level_begin(int l) const { return level_begin_[l]; }
+  /// Past the last tile of level `l`.
   Index level_end(int l) const { return level_begin_[l + 1]; }
+  /// All tiles, level after level.
   const std::vector<Tile>& tiles() const { return tiles_; }
+  /// All vertices.
   const std::vector<Vertex>& vertices() const { return vertices_; }
+  /// Tile `t`.
   const Tile& tile(Index t) const { return tiles_[t]; }
+  /// Vertex `v`.
   const Vertex& vertex(Index v) const { return vertices_[v]; }
+  /// Whether tile `t` has no children.
   bool is_leaf(Index t) const { return tiles_[t].number_of_children == 0; }
+  /// Child `k` of tile `t`, for `k` below its `number_of_children`.
   Index child(Index t, int k) const { return tiles_[t].first_child + Index(k); }
+  /// The tile across edge `edge` of tile `t` (see `Tile::neighbors`).
   Index neighbor(Index t, int edge) const { return tiles_[t].neighbors[edge]; }
+  /// The length scale of the tiles of `t`'s level: the root's, divided by the golden ratio at each level.
   double scale(Index t) const { return context_.scale(tiles_[t].level); }
+  /// The sampling context the tree was built from (advanced).
   const internal::Penrose::Sampling_context& context() const { return context_; }
   /// @}
 

@@ -38,8 +38,11 @@ template <class Traits = Exact_predicates_inexact_constructions_kernel>
 class Raster_density_2
 {
 public:
+  /// The number type of the traits.
   typedef typename Traits::FT FT;
+  /// The point type of the traits, the density's argument.
   typedef typename Traits::Point_2 Point_2;
+  /// The type of the region and of the boxes bounded.
   typedef typename Traits::Iso_rectangle_2 Iso_rectangle_2;
 
   /// `values` holds `width * height` values, row after row from the top.
@@ -70,7 +73,9 @@ public:
     build_pyramid();
   }
 
+  /// The number of columns.
   std::size_t width() const { return w_; }
+  /// The number of rows.
   std::size_t height() const { return h_; }
   /// The value of pixel (i, j), column i, row j from the top.
   double pixel(std::size_t i, std::size_t j) const { return levels_[0][j * w_ + i]; }

@@ -23,8 +23,20 @@ namespace Penrose_quality {
 typedef Exact_predicates_inexact_constructions_kernel K;
 typedef Delaunay_triangulation_2<K> Delaunay;
 
-struct Rectangle { double xmin, ymin, xmax, ymax; double area() const { return (xmax - xmin) * (ymax - ymin); } };
+/// \ingroup PkgPenroseDelaunayTriangulation2Quality
+/// An axis-parallel rectangle: the window measured.
+struct Rectangle
+{
+  double xmin; ///< west
+  double ymin; ///< south
+  double xmax; ///< east
+  double ymax; ///< north
+  /// Its area.
+  double area() const { return (xmax - xmin) * (ymax - ymin); }
+};
 
+/// \ingroup PkgPenroseDelaunayTriangulation2Quality
+/// What `spacing()` measures, distances in units of `d_max` (Lagae and Dutre 2008).
 struct Spacing
 {
   double d_max;      ///< sqrt(2 A / (sqrt(3) N)): the spacing of a hexagonal packing
@@ -33,13 +45,16 @@ struct Spacing
   std::size_t measured; ///< points farther than 2 d_max from the border
 };
 
+/// \ingroup PkgPenroseDelaunayTriangulation2Quality
+/// The spacing of `n` points in a hexagonal packing of `area`: \f$\sqrt{2 A / (\sqrt{3} n)}\f$.
 inline double packing_distance(std::size_t n, double area)
 {
   return std::sqrt(2. * area / (std::sqrt(3.) * double(n)));
 }
 
-/// Nearest-neighbour statistics of `points` (x, y pairs) in `r`, ignoring a
-/// band of 2 d_max along the border.
+/// \ingroup PkgPenroseDelaunayTriangulation2Quality
+/// Nearest-neighbour statistics of `points` (anything with `x()` and `y()`)
+/// in `r`, ignoring a band of 2 d_max along the border.
 template <class PointRange>
 Spacing spacing(const PointRange& points, const Rectangle& r)
 {
@@ -68,6 +83,7 @@ Spacing spacing(const PointRange& points, const Rectangle& r)
   return s;
 }
 
+/// \ingroup PkgPenroseDelaunayTriangulation2Quality
 /// Radius of the largest empty circle centred in `r`, over d_max. Voronoi
 /// vertices inside `r` are exact; the border is scanned in steps of d_max / 64.
 template <class PointRange>
@@ -101,15 +117,21 @@ double coverage_radius(const PointRange& points, const Rectangle& r)
   return std::sqrt(best) / d_max;
 }
 
-/// Radially averaged periodogram of the points of the square window
-/// [x0, x0 + w]^2, on `rings` rings of frequency up to `max_frequency`
-/// (in units of 1/w), with the anisotropy (variance over squared mean of
-/// each ring, in dB) of each ring.
+/// \ingroup PkgPenroseDelaunayTriangulation2Quality
+/// What `radial_power_spectrum()` measures: one entry per ring that holds
+/// at least two frequencies.
 struct Radial_spectrum
 {
-  std::vector<double> frequency, power, anisotropy_db;
+  std::vector<double> frequency;      ///< the ring's middle, in units of 1/w
+  std::vector<double> power;          ///< the mean power over the ring, 1 for white noise
+  std::vector<double> anisotropy_db;  ///< the variance of the power over its squared mean, in dB
 };
 
+/// \ingroup PkgPenroseDelaunayTriangulation2Quality
+/// Radially averaged periodogram of `points` (anything with `x()` and
+/// `y()`) in the square window [x0, x0 + w]^2, on `rings` rings of
+/// frequency up to `max_frequency` (in units of 1/w), with the anisotropy
+/// of each ring.
 template <class PointRange>
 Radial_spectrum radial_power_spectrum(const PointRange& points, double x0, double y0, double w,
                                       int max_frequency, int rings)

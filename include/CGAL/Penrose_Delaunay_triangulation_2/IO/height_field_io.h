@@ -38,10 +38,20 @@ the northern row (largest y), as in an image and in an ESRI grid.
 */
 struct Height_field
 {
-  std::size_t width = 0, height = 0;
+  std::size_t width = 0;                  ///< columns
+  std::size_t height = 0;                 ///< rows
   std::vector<double> values;             ///< `width * height` heights, row after row from the top
-  double x0 = 0., y0 = 0., x1 = 0., y1 = 0.; ///< the rectangle covered by the cells (cell corners)
+  /// \name The rectangle covered by the cells
+  /// From their outer corners: (x0, y0) the lower left, (x1, y1) the upper right.
+  /// @{
 
+  double x0 = 0.; ///< west
+  double y0 = 0.; ///< south
+  double x1 = 0.; ///< east
+  double y1 = 0.; ///< north
+  /// @}
+
+  /// The height of cell (i, j), column i, row j from the top.
   double at(std::size_t i, std::size_t j) const { return values[j * width + i]; }
 };
 

@@ -21,8 +21,9 @@ namespace IO {
 /// A raster of non-negative values, row 0 at the top.
 struct Luminance_image
 {
-  std::size_t width = 0, height = 0;
-  std::vector<double> values;
+  std::size_t width = 0;            ///< columns
+  std::size_t height = 0;           ///< rows
+  std::vector<double> values;       ///< `width * height` values, row after row from the top
   bool high_dynamic_range = false;  ///< read from a Radiance .hdr file (linear radiance)
 };
 

@@ -29,10 +29,12 @@ A colour image, row 0 at the top, three values (red, green, blue) a pixel.
 */
 struct Rgb_image
 {
-  std::size_t width = 0, height = 0;
+  std::size_t width = 0;            ///< columns
+  std::size_t height = 0;           ///< rows
   std::vector<float> values;        ///< `3 * width * height` values, row after row from the top
   bool high_dynamic_range = false;  ///< read from a Radiance .hdr file (linear radiance)
 
+  /// The three values of pixel (i, j), column i, row j from the top.
   const float* pixel(std::size_t i, std::size_t j) const { return &values[3 * (j * width + i)]; }
 };
 
