@@ -86,7 +86,14 @@ public:
 
   // The vertices that build() makes room for: the count varies around the
   // expectation by about a percent. Twice as many faces.
-  static std::size_t vertex_capacity(double expected_points) { return std::size_t(1.25 * expected_points) + 64; }
+  static std::size_t vertex_capacity(double expected_points)
+  {
+    return std::size_t(vertex_margin * expected_points) + extra_vertices;
+  }
+
+  // The most points whose reservation, twice vertex_capacity() in faces,
+  // the mesh's indices can hold.
+  static double most_expected_points() { return (0.5 * double(null) - double(extra_vertices)) / vertex_margin; }
 
   // `expected_points` sizes the arrays once: growing them level after level
   // would fault fresh pages in at every reallocation. `progress(f)`, if set,
@@ -225,6 +232,9 @@ private:
                  "Penrose_Delaunay_triangulation_2: the base mesh would grow to about ", units.str(),
                  overrefinement_hint);
   }
+
+  static constexpr double vertex_margin = 1.25;
+  static constexpr std::size_t extra_vertices = 64;
 
   // Below this many points a helper thread costs more than it saves.
   static constexpr double least_points_for_helper = double(std::size_t(1) << 16);

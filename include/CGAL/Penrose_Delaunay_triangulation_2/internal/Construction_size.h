@@ -9,7 +9,6 @@
 #define CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_CONSTRUCTION_SIZE_H
 
 #include <CGAL/Penrose_Delaunay_triangulation_2/internal/Base_triangulation_builder.h>
-#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Flat_mesh.h>
 #include <CGAL/Penrose_Delaunay_triangulation_2/internal/Size_limits.h>
 
 namespace CGAL {
@@ -22,9 +21,8 @@ namespace Penrose {
 // each, would exceed `memory` bytes (0: unknown, not checked).
 inline void check_construction_size(double expected_points, double bytes_per_point, double memory)
 {
-  // 2 vertex_capacity(most) = null
-  const double most = (0.5 * double(Flat_mesh::null) - double(Base_triangulation_builder::vertex_capacity(0.))) / 1.25;
-  check_growth(expected_points, most, bytes_per_point, memory, "Penrose_Delaunay_triangulation_2: about ", " points", "");
+  check_growth(expected_points, Base_triangulation_builder::most_expected_points(), bytes_per_point, memory,
+               "Penrose_Delaunay_triangulation_2: about ", " points", "");
 }
 
 } // namespace Penrose
