@@ -441,13 +441,13 @@ private:
     // once that has its vertices: they hold its handle where it fits, so that
     // no array of handles is added at the peak of the construction.
     constexpr bool in_place = std::is_trivially_copyable<Face_handle>::value &&
-                              sizeof(Face_handle) <= sizeof(Flat_mesh::Face::v);
+                              sizeof(Face_handle) <= sizeof(Flat_mesh::Face::Indices);
     std::vector<Face_handle> side(in_place ? 0 : m.faces.size());
-    auto keep_handle = [&m, &side](std::size_t f, Face_handle h) {
+    auto keep_handle = [&](std::size_t f, Face_handle h) {
       if constexpr(in_place) std::memcpy(m.faces[f].v.data(), &h, sizeof h);
       else side[f] = h;
     };
-    auto fh = [&m, &side](std::size_t f) {
+    auto fh = [&](std::size_t f) {
       Face_handle h;
       if constexpr(in_place) std::memcpy(static_cast<void*>(&h), m.faces[f].v.data(), sizeof h);
       else h = side[f];

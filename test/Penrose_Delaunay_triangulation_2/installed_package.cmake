@@ -13,7 +13,7 @@ run("install" ${CMAKE_COMMAND} --install ${BUILD} --prefix ${WORK}/prefix)
 if(NOT EXISTS ${WORK}/prefix/include/CGAL/Penrose_Delaunay_triangulation_2.h)
   message(FATAL_ERROR "the headers were not installed")
 endif()
-run("configure" ${CMAKE_COMMAND} -S ${USER_PROJECT} -B ${WORK}/build -DCMAKE_BUILD_TYPE=Release
+run("configure" ${CMAKE_COMMAND} -S ${USER_PROJECT} -B ${WORK}/build -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=${CXX}
                 -DCMAKE_PREFIX_PATH=${WORK}/prefix -DEXAMPLE_SOURCE=${EXAMPLE_SOURCE})
 run("build" ${CMAKE_COMMAND} --build ${WORK}/build)
 run("the example" ${WORK}/build/triangulate_image ${IMAGE} 3000)

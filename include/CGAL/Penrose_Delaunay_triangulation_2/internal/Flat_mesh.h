@@ -46,8 +46,9 @@ public:
 
   struct Face
   {
-    std::array<Index, 3> v;
-    std::array<Index, 3> n;
+    typedef std::array<Index, 3> Indices;
+    Indices v;
+    Indices n;
   };
 
   static int ccw(int i) { return i == 2 ? 0 : i + 1; }
