@@ -287,7 +287,7 @@ private:
     }
   }
 
-  Survey survey(const Tile& t, int level) const
+  CGAL_PENROSE_HOT_INLINE Survey survey(const Tile& t, int level) const
   {
     const Subdivision_rule& r = rule(t.tile_type());
     const int child_level = level + 1;

@@ -22,6 +22,17 @@
 #include <string>
 #include <vector>
 
+// For the few functions that every tile's refinement calls: Clang 14 left
+// them out of line, and the sampler took 9 to 11% longer than with them
+// inlined (the construction, whose surveys call them on a helper thread, up
+// to 1.5%; PERFORMANCE_LOG.md of the benchmarks, session 36). G++ 12
+// inlines them on its own.
+#if defined(__clang__)
+#  define CGAL_PENROSE_HOT_INLINE __attribute__((always_inline)) inline
+#else
+#  define CGAL_PENROSE_HOT_INLINE inline
+#endif
+
 namespace CGAL {
 namespace internal {
 namespace Penrose {
@@ -120,7 +131,7 @@ public:
   // Importance at (x, y), read at the nearest point of the region: the density
   // is never evaluated outside the region, and tiles that straddle its border
   // see the density inside it.
-  double importance(double x, double y) const
+  CGAL_PENROSE_HOT_INLINE double importance(double x, double y) const
   {
     const double i = density(x, y) * importance_per_density_;
     if(!(i < max_importance_)) throw_too_dense(clamp_x(x), clamp_y(y), i);
@@ -142,7 +153,7 @@ public:
   // F(2 level + 2) (C.7), which is also above the least importance that
   // needs the level (C.5): a tile whose thresholds are all out of reach is a
   // leaf, which spares the idle last level just past a level boundary.
-  bool should_refine(int level, std::uint64_t threshold,
+  CGAL_PENROSE_HOT_INLINE bool should_refine(int level, std::uint64_t threshold,
                      const double* x, const double* y, const double* importance) const
   {
     const double bx0 = (std::min)({x[0], x[1], x[2]}), bx1 = (std::max)({x[0], x[1], x[2]});
@@ -171,7 +182,7 @@ public:
 
   // Threshold test (C.7), then correction (C.9). Returns false for a sample
   // that is not active; `s` is filled in either way for an active one.
-  bool activate(double x, double y, double importance, const Sample_birth& b, Placed_sample& s) const
+  CGAL_PENROSE_HOT_INLINE bool activate(double x, double y, double importance, const Sample_birth& b, Placed_sample& s) const
   {
     if(!(importance >= static_cast<double>(b.threshold))) return false;
     const auto& li = fibonacci().level_importance;
