@@ -23,7 +23,7 @@
 #include <vector>
 
 // For the few functions that every tile's refinement calls: Clang 14 left
-// them out of line, and the sampler took 9 to 11% longer than with them
+// them out of line, and the sampler took 9 to 12% longer than with them
 // inlined (the construction, whose surveys call them on a helper thread, up
 // to 1.5%; PERFORMANCE_LOG.md of the benchmarks, session 36). G++ 12
 // inlines them on its own.
