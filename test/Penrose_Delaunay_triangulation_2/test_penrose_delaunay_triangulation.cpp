@@ -65,18 +65,18 @@ std::pair<double, double> xy_of(const Point& p) { return {p.x(), p.y()}; }
 
 // The reference: CGAL's range insertion, and the Devillers hierarchy fed one
 // point at a time, on the sampler's points made by `lift` in the traits Gt;
-// `number_of_points`, if given, receives how many there are.
+// `sampled`, if given, receives the sampler's points.
 template <class Gt, class Lift, class XY>
 void expect_matches_cgal(const CGAL::Penrose_Delaunay_triangulation_2<Gt>& pdt, const Sampler& s, const Lift& lift,
-                         const XY& xy, const std::string& what, std::size_t* number_of_points = nullptr)
+                         const XY& xy, const std::string& what, std::vector<Point>* sampled = nullptr)
 {
   typedef typename Gt::Point_2 P;
   ASSERT_TRUE(pdt.is_valid()) << what;
   std::vector<Point> planar;
   s(std::back_inserter(planar));
-  if(number_of_points != nullptr) *number_of_points = planar.size();
   std::vector<P> points;
   for(const Point& p : planar) points.push_back(lift(p.x(), p.y()));
+  if(sampled != nullptr) sampled->swap(planar);
   const CGAL::Delaunay_triangulation_2<Gt> dt(points.begin(), points.end());
   CGAL::Triangulation_hierarchy_2<CGAL::Delaunay_triangulation_2<Gt,
     CGAL::Triangulation_data_structure_2<CGAL::Triangulation_hierarchy_vertex_base_2<
@@ -89,21 +89,29 @@ void expect_matches_cgal(const CGAL::Penrose_Delaunay_triangulation_2<Gt>& pdt, 
   EXPECT_TRUE(mine == edge_set(hierarchy, xy)) << what << ": edges differ from Triangulation_hierarchy_2";
 }
 
+// The reference for `pdt`, built from `sampler`, with few fallbacks;
+// `sampled` receives the sampler's points.
+void expect_built_as_cgal(const CGAL::Penrose_Delaunay_triangulation_2<Epick>& pdt, const Sampler& sampler,
+                          const std::string& what, std::vector<Point>& sampled)
+{
+  expect_matches_cgal(pdt, sampler, [](double x, double y) { return Point(x, y); }, xy_of, what, &sampled);
+  EXPECT_LE(double(pdt.number_of_fallbacks()), 0.001 * double(sampled.size()) + 0.5) << what;
+}
+
 // Returns the number of points and the dimension of the triangulation.
 std::pair<std::size_t, int> expect_same_as_cgal(const Sampler& sampler, const std::string& what)
 {
   const CGAL::Penrose_Delaunay_triangulation_2<Epick> pdt(sampler);
-  std::size_t n = 0;
-  expect_matches_cgal(pdt, sampler, [](double x, double y) { return Point(x, y); }, xy_of, what, &n);
-  EXPECT_LE(double(pdt.number_of_fallbacks()), 0.001 * double(n) + 0.5) << what;
-  return {n, pdt.dimension()};
+  std::vector<Point> sampled;
+  expect_built_as_cgal(pdt, sampler, what, sampled);
+  return {sampled.size(), pdt.dimension()};
 }
 
 // Inserts 300 random points of `box` into `pdt`, whose vertices are
 // `points`, and removes about one vertex in 40 (300 at most); checks
 // validity after each batch and that the edges are then those of CGAL's
 // triangulation of what is left, which is returned.
-std::vector<Point> expect_delaunay_after_edits(CGAL::Penrose_Delaunay_triangulation_2<Epick>& pdt,
+CGAL::Delaunay_triangulation_2<Epick> expect_delaunay_after_edits(CGAL::Penrose_Delaunay_triangulation_2<Epick>& pdt,
                                                std::vector<Point> points, const Epick::Iso_rectangle_2& box,
                                                CGAL::Random& r, const std::string& what)
 {
@@ -121,9 +129,9 @@ std::vector<Point> expect_delaunay_after_edits(CGAL::Penrose_Delaunay_triangulat
   EXPECT_TRUE(pdt.is_valid()) << what << ": after removals";
   std::vector<Point> rest;
   for(const Point& p : points) if(!removed.count(xy_of(p))) rest.push_back(p);
-  const CGAL::Delaunay_triangulation_2<Epick> dt(rest.begin(), rest.end());
+  CGAL::Delaunay_triangulation_2<Epick> dt(rest.begin(), rest.end());
   EXPECT_TRUE(edge_set(pdt, xy_of) == edge_set(dt, xy_of)) << what << ": edges differ after edits";
-  return rest;
+  return dt;
 }
 
 // The built-in densities of penrose_mesh, on the unit square.
@@ -604,6 +612,10 @@ TEST(Triangulation, RandomRegionsAndDensitiesMatchCgal)
   const int cases = from_environment("PENROSE_RANDOM_CASES", 200);
   const int first = from_environment("PENROSE_RANDOM_FIRST_SEED", 1);
   int matched = 0, refused = 0;
+  auto expect_refusal = [&refused](const Random_case& c, const std::exception& e) {
+    EXPECT_TRUE(may_be_refused(c)) << c.what << ": refused: " << e.what();
+    ++refused;
+  };
   for(int seed = first; seed < first + cases; ++seed) {
     const Random_case c = random_case(seed);
     try {
@@ -611,22 +623,17 @@ TEST(Triangulation, RandomRegionsAndDensitiesMatchCgal)
       const Sampler s = c.bound ? Sampler(c.region, c.density, CGAL::parameters::density_upper_bound(c.bound, np))
                                 : Sampler(c.region, c.density, np);
       CGAL::Penrose_Delaunay_triangulation_2<Epick> pdt(s);
-      std::size_t n = 0;
-      expect_matches_cgal(pdt, s, [](double x, double y) { return Point(x, y); }, xy_of, c.what, &n);
-      EXPECT_LE(double(pdt.number_of_fallbacks()), 0.001 * double(n) + 0.5) << c.what;
+      std::vector<Point> points;
+      expect_built_as_cgal(pdt, s, c.what, points);
       if(seed % 4 == 0) {
-        std::vector<Point> points;
-        s(std::back_inserter(points));
         CGAL::Random r(seed);
         expect_delaunay_after_edits(pdt, points, c.region, r, c.what);
       }
       ++matched;
     } catch(const std::range_error& e) {
-      EXPECT_TRUE(may_be_refused(c)) << c.what << ": refused: " << e.what();
-      ++refused;
+      expect_refusal(c, e);
     } catch(const std::invalid_argument& e) {  // a region that doubles cannot tell from a point
-      EXPECT_TRUE(may_be_refused(c)) << c.what << ": refused: " << e.what();
-      ++refused;
+      expect_refusal(c, e);
     }
   }
   std::cout << matched << " cases matched CGAL, " << refused << " refused as too fine for doubles\n";
@@ -739,8 +746,8 @@ TEST(Triangulation, StaysValidUnderEdits)
   std::vector<Point> points;
   s(std::back_inserter(points));
   CGAL::Random r(7);
-  const std::vector<Point> rest = expect_delaunay_after_edits(pdt, points, Epick::Iso_rectangle_2(-0.2, -0.2, 1.2, 1.2), r, "edits");
-  const CGAL::Delaunay_triangulation_2<Epick> dt(rest.begin(), rest.end());
+  const CGAL::Delaunay_triangulation_2<Epick> dt =
+    expect_delaunay_after_edits(pdt, points, Epick::Iso_rectangle_2(-0.2, -0.2, 1.2, 1.2), r, "edits");
   // the rest of the Delaunay_triangulation_2 interface works on it
   const auto v = pdt.nearest_vertex(Point(0.5, 0.5));
   EXPECT_EQ(v->point(), dt.nearest_vertex(Point(0.5, 0.5))->point());
