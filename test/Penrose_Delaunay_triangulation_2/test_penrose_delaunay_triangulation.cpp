@@ -627,7 +627,7 @@ TEST(Triangulation, RandomRegionsAndDensitiesMatchCgal)
       expect_built_as_cgal(pdt, s, c.what, points);
       if(seed % 4 == 0) {
         CGAL::Random r(seed);
-        expect_delaunay_after_edits(pdt, points, c.region, r, c.what);
+        expect_delaunay_after_edits(pdt, std::move(points), c.region, r, c.what);
       }
       ++matched;
     } catch(const std::range_error& e) {
