@@ -605,9 +605,17 @@ bool may_be_refused(const Random_case& c)
 // close for doubles, a clear refusal.
 TEST(Triangulation, RandomRegionsAndDensitiesMatchCgal)
 {
+  // a malformed value fails the test rather than silently running no case
   auto from_environment = [](const char* name, int fallback) {
     const char* value = std::getenv(name);
-    return value != nullptr ? std::atoi(value) : fallback;
+    if(value == nullptr) return fallback;
+    char* end = nullptr;
+    const long parsed = std::strtol(value, &end, 10);
+    if(end == value || *end != '\0' || parsed < 1 || parsed > 1000000) {
+      ADD_FAILURE() << name << "=\"" << value << "\" is not a whole number from 1 to 10^6";
+      return 0;
+    }
+    return int(parsed);
   };
   const int cases = from_environment("PENROSE_RANDOM_CASES", 200);
   const int first = from_environment("PENROSE_RANDOM_FIRST_SEED", 1);
@@ -637,6 +645,7 @@ TEST(Triangulation, RandomRegionsAndDensitiesMatchCgal)
     }
   }
   std::cout << matched << " cases matched CGAL, " << refused << " refused as too fine for doubles\n";
+  EXPECT_GT(matched, 0) << "no case was compared with CGAL";
 }
 
 TEST(Triangulation, WithoutCorrectionCocircularPointsMatchCgal)
