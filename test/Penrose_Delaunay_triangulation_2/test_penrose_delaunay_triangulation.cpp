@@ -756,7 +756,7 @@ TEST(Triangulation, StaysValidUnderEdits)
   s(std::back_inserter(points));
   CGAL::Random r(7);
   const CGAL::Delaunay_triangulation_2<Epick> dt =
-    expect_delaunay_after_edits(pdt, points, Epick::Iso_rectangle_2(-0.2, -0.2, 1.2, 1.2), r, "edits");
+    expect_delaunay_after_edits(pdt, std::move(points), Epick::Iso_rectangle_2(-0.2, -0.2, 1.2, 1.2), r, "edits");
   // the rest of the Delaunay_triangulation_2 interface works on it
   const auto v = pdt.nearest_vertex(Point(0.5, 0.5));
   EXPECT_EQ(v->point(), dt.nearest_vertex(Point(0.5, 0.5))->point());
