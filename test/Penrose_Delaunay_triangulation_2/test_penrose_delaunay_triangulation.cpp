@@ -554,7 +554,7 @@ Random_case random_case(int seed)
   case 3: {  // up to nine orders of magnitude across the region
     const double k = r.get_double(1, 20);
     c.density = [=](const Point& p) { return std::exp(k * u(p)); };
-    c.bound = [=](const Epick::Iso_rectangle_2& b) { return std::exp(k * std::min(1., (b.xmax() - x0) / dx)) * (1 + 1e-9); };
+    c.bound = [=](const Epick::Iso_rectangle_2& b) { return std::exp(k * (std::min)(1., (b.xmax() - x0) / dx)) * (1 + 1e-9); };
     c.what = "exponential";
     break; }
   case 4: {
