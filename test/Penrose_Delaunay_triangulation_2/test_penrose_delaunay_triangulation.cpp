@@ -532,7 +532,7 @@ Random_case random_case(int seed)
   auto v = [=](const Point& p) { return (p.y() - y0) / dy; };
 
   Random_case c{region, Density(), {}, std::size_t(std::pow(10., r.get_double(0, 4.3))), r.get_int(0, 4) != 0, ""};
-  switch(r.get_int(0, 5)) {
+  switch(r.get_int(0, 6)) {
   case 0: {
     const Density smooth = random_density(seed);
     c.density = [=](const Point& p) { return smooth(Point(u(p), v(p))); };
