@@ -111,9 +111,9 @@ std::pair<std::size_t, int> expect_same_as_cgal(const Sampler& sampler, const st
 // `points`, and removes about one vertex in 40 (300 at most); checks
 // validity after each batch and that the edges are then those of CGAL's
 // triangulation of what is left, which is returned.
-CGAL::Delaunay_triangulation_2<Epick> expect_delaunay_after_edits(CGAL::Penrose_Delaunay_triangulation_2<Epick>& pdt,
-                                               std::vector<Point> points, const Epick::Iso_rectangle_2& box,
-                                               CGAL::Random& r, const std::string& what)
+CGAL::Delaunay_triangulation_2<Epick>
+expect_delaunay_after_edits(CGAL::Penrose_Delaunay_triangulation_2<Epick>& pdt, std::vector<Point> points,
+                            const Epick::Iso_rectangle_2& box, CGAL::Random& r, const std::string& what)
 {
   for(int i = 0; i < 300; ++i) {
     const Point p(r.get_double(box.xmin(), box.xmax()), r.get_double(box.ymin(), box.ymax()));
