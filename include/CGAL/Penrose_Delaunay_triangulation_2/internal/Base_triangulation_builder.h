@@ -132,9 +132,9 @@ public:
       if(surveyed_ahead && level == 0) start_surveys(helper, frontier_, level);
       const bool completed =
         for_each_tile(0, frontier_.size(), [&](std::size_t k) { return report(done + 0.5 * k); },
-                      [this, surveyed_ahead](const Tile& t) { if(!surveyed_ahead) fetch_corners(t); },
+                      [this, surveyed_ahead](const Tile& t) { if(!surveyed_ahead) fetch_corners(t, corners()); },
                       [this, &helper, surveyed_ahead, level](std::size_t k) {
-                        if(!surveyed_ahead) { create_vertices(k, level, survey(frontier_[k], level), helper); return; }
+                        if(!surveyed_ahead) { create_vertices(k, level, survey(c_, frontier_[k], level, corners()), helper); return; }
                         helper.wait_for(k, [this, k] { return populate_surveys_ahead_of(k); });
                         create_vertices(k, level, surveys_[k], helper);
                       }) &&
@@ -249,10 +249,16 @@ private:
     const Tile* t = tiles.data();
     Survey* s = surveys_.data();
     const std::size_t n = tiles.size();
-    helper.start(n, [this, t, s, n, level](std::size_t b, std::size_t e) {
+    // The job reads nothing through this builder or the mesh: the calling
+    // thread writes the ends of their vectors at every vertex, and a read of
+    // a word beside them would move that cache line between the cores at
+    // each tile (on a Xeon, the base mesh took 190 instead of 127 ms).
+    const Corners corners = this->corners();
+    const Sampling_context* context = &c_;
+    helper.start(n, [corners, context, t, s, n, level](std::size_t b, std::size_t e) {
       for(std::size_t k = b; k < e; ++k) {
-        if(k + ahead < n) fetch_corners(t[k + ahead]);
-        s[k] = survey(t[k], level);
+        if(k + ahead < n) fetch_corners(t[k + ahead], corners);
+        s[k] = survey(*context, t[k], level, corners);
       }
     });
     return true;
@@ -279,15 +285,26 @@ private:
     return can_populate_;
   }
 
-  void fetch_corners(const Tile& t) const
+  // The points and importances of the vertices, which a survey reads at a
+  // tile's corners; valid while the vertex arrays keep their capacity.
+  struct Corners
+  {
+    const Flat_mesh::Point* points;
+    const double* importance;
+  };
+
+  Corners corners() const { return {m_.points.data(), importance_.data()}; }
+
+  static void fetch_corners(const Tile& t, const Corners& d)
   {
     for(Index c : t.corners) {
-      CGAL_PENROSE_PREFETCH(&m_.points[c]);
-      CGAL_PENROSE_PREFETCH(&importance_[c]);
+      CGAL_PENROSE_PREFETCH(&d.points[c]);
+      CGAL_PENROSE_PREFETCH(&d.importance[c]);
     }
   }
 
-  CGAL_PENROSE_HOT_INLINE Survey survey(const Tile& t, int level) const
+  CGAL_PENROSE_HOT_INLINE static Survey survey(const Sampling_context& context, const Tile& t, int level,
+                                               const Corners& d)
   {
     const Subdivision_rule& r = rule(t.tile_type());
     const int child_level = level + 1;
@@ -296,17 +313,17 @@ private:
     s.refined_children = 0;
     double vx[5], vy[5], vi[5];
     for(int i = 0; i < 3; ++i) {
-      vx[i] = m_.points[t.corners[i]].x(); vy[i] = m_.points[t.corners[i]].y(); vi[i] = importance_[t.corners[i]];
+      vx[i] = d.points[t.corners[i]].x(); vy[i] = d.points[t.corners[i]].y(); vi[i] = d.importance[t.corners[i]];
     }
     for(int n = 0; n < r.number_of_new_vertices; ++n) {
       const New_vertex_rule& nv = r.new_vertices[n];
       const int a = nv.near_corner, b = nv.far_corner;
       vx[3 + n] = split_coordinate(vx[a], vx[b]);
       vy[3 + n] = split_coordinate(vy[a], vy[b]);
-      s.importance[n] = vi[3 + n] = c_.importance(vx[3 + n], vy[3 + n]);
+      s.importance[n] = vi[3 + n] = context.importance(vx[3 + n], vy[3 + n]);
       Placed_sample p;
-      if(nv.is_sample && c_.activate(vx[3 + n], vy[3 + n], vi[3 + n], sample_birth(t, r, child_level), p)
-         && c_.contains(p.x, p.y)) {
+      if(nv.is_sample && context.activate(vx[3 + n], vy[3 + n], vi[3 + n], sample_birth(t, r, child_level), p)
+         && context.contains(p.x, p.y)) {
         s.kept = true;
         s.target_x = p.x; s.target_y = p.y;
       }
@@ -318,7 +335,7 @@ private:
         const int j = cr.corners[i];
         cx[i] = vx[j]; cy[i] = vy[j]; ci[i] = vi[j];
       }
-      if(c_.should_refine(child_level, child_threshold(t, cr, child_level), cx, cy, ci)) s.refined_children |= 1u << c;
+      if(context.should_refine(child_level, child_threshold(t, cr, child_level), cx, cy, ci)) s.refined_children |= 1u << c;
     }
     return s;
   }
