@@ -19,7 +19,6 @@
 
 #include <array>
 #include <cmath>
-#include <cstring>
 #include <cstddef>
 #include <functional>
 #include <limits>
@@ -283,7 +282,7 @@ public:
     const std::size_t live = stats_.base_vertices + frame.size() - stats_.removed_vertices;
     // blocks kept from an earlier construction and not taken by this one would add to its peak
     internal::Penrose::release_kept_blocks();
-    Reservation reservation(live + 1, mesh.number_of_faces(), [&builder] { builder.reset(); });
+    Reservation reservation(live + 1, mesh.faces.size(), [&builder] { builder.reset(); });
     stats_.flips = internal::Penrose::make_delaunay(mesh);
     if(!proceed(0.84)) return abandon();
 
@@ -416,7 +415,6 @@ private:
   {
     constexpr std::size_t ahead = Flat_mesh::fetch_distance;
     const bool prepared = reservation.prepared();
-    const typename Reservation::Face_iterator middle = reservation.middle_face();
     Triangulation_data_structure& tds = this->tds();
     tds.swap(reservation.tds());
     const Vertex_handle infinite = tds.create_vertex();
@@ -429,90 +427,50 @@ private:
         vh[v]->set_point(lift(m.points[v].x(), m.points[v].y()));
       }
     decltype(m.points)().swap(m.points);
-    // the edges without a face across, counter-clockwise, found while the
-    // flat faces still hold their vertices
+    // the edges without a face across, counter-clockwise
     std::vector<std::pair<Index, int>> boundary;
     Index next = on_boundary;
     do {
       boundary.push_back(boundary_edge_from(m, next));
       next = m.faces[boundary.back().first].v[Flat_mesh::cw(boundary.back().second)];
     } while(next != on_boundary);
-    // The TDS face of each flat face. The flat face's vertex slots are dead
-    // once that has its vertices: they hold its handle where it fits, so that
-    // no array of handles is added at the peak of the construction.
-    constexpr bool in_place = std::is_trivially_copyable<Face_handle>::value &&
-                              sizeof(Face_handle) <= sizeof(Flat_mesh::Face::Indices);
-    std::vector<Face_handle> side(in_place ? 0 : m.faces.size());
-    auto keep_handle = [&](std::size_t f, Face_handle h) {
-      if constexpr(in_place) std::memcpy(m.faces[f].v.data(), &h, sizeof h);
-      else side[f] = h;
-    };
-    auto fh = [&](std::size_t f) {
-      Face_handle h;
-      if constexpr(in_place) std::memcpy(static_cast<void*>(&h), m.faces[f].v.data(), sizeof h);
-      else h = side[f];
-      return h;
-    };
-    // Gives the live flat faces from `begin` to `end` in order the TDS faces
-    // that `take(a, b, c)` returns with the vertices a, b, c.
-    auto write_faces = [&](std::size_t begin, std::size_t end, auto take) {
-      for(std::size_t f = begin; f < end; ++f) {
-        if(f + ahead < end)
-          for(Index v : m.faces[f + ahead].v) CGAL_PENROSE_PREFETCH(&vh[v]);
-        if(!m.face_alive[f]) continue;
-        const auto& F = m.faces[f];
-        keep_handle(f, take(vh[F.v[0]], vh[F.v[1]], vh[F.v[2]]));
-      }
-    };
+    // The TDS face of flat face f, dead or alive, is the f-th made.
+    typename Reservation::Faces made;
     if(prepared) {
-      CGAL_assertion(tds.faces().size() == m.number_of_faces());
-      // as many live flat faces before `half_way` as TDS faces before `middle`
-      std::size_t half_way = 0;
-      for(std::size_t before = 0, half = m.number_of_faces() / 2; before < half; ++half_way)
-        before += std::size_t(m.face_alive[half_way]);
-      internal::Penrose::run_in_two_halves(true, [&](int half) {
-        Face_handle next = half == 0 ? tds.faces().begin() : middle;
-        auto take = [&next](Vertex_handle a, Vertex_handle b, Vertex_handle c) {
-          next->set_vertices(a, b, c);
-          return next++;
-        };
-        if(half == 0) write_faces(0, half_way, take);
-        else write_faces(half_way, m.faces.size(), take);
-        CGAL_assertion(next == (half == 0 ? middle : tds.faces().end()));
-      });
+      made = std::move(reservation.faces());
     } else {
-      write_faces(0, m.faces.size(),
-                  [&tds](Vertex_handle a, Vertex_handle b, Vertex_handle c) { return tds.create_face(a, b, c); });
+      for(std::size_t f = 0; f < m.faces.size(); ++f) made.record(tds.create_face());
+      made.index();
     }
-    // The links and each vertex's face change no container: bound by memory,
-    // they take two threads, in halves.
-    auto link_faces = [&m, &fh](internal::Penrose::Half_range faces) {
+    CGAL_assertion(made.size() == m.faces.size());
+    // Each face's vertices and neighbours, and each vertex's face, change no
+    // container: bound by memory, they take two threads, in halves.
+    auto write_faces = [&m, &made, &vh](internal::Penrose::Half_range faces) {
       const std::size_t end = faces.end;
       for(std::size_t f = faces.begin; f < end; ++f) {
         if(f + ahead < end)
-          for(Index g : m.faces[f + ahead].n)
-            if(g != Flat_mesh::null) CGAL_PENROSE_PREFETCH(&m.faces[g]);
+          for(Index v : m.faces[f + ahead].v) CGAL_PENROSE_PREFETCH(&vh[v]);
         if(!m.face_alive[f]) continue;
-        const Face_handle F = fh(f);
+        const Flat_mesh::Face& F = m.faces[f];
+        const Face_handle h = made[f];
+        h->set_vertices(vh[F.v[0]], vh[F.v[1]], vh[F.v[2]]);
         for(int i = 0; i < 3; ++i)
-          if(const Index g = m.faces[f].n[i]; g != Flat_mesh::null) F->set_neighbor(i, fh(g));
+          if(F.n[i] != Flat_mesh::null) h->set_neighbor(i, made[F.n[i]]);
       }
     };
-    auto give_vertices_a_face = [&m, &fh, &vh](internal::Penrose::Half_range vertices) {
-      const std::size_t end = vertices.end;
-      for(std::size_t v = vertices.begin; v < end; ++v) {
-        if(v + ahead < end && m.vertex_face[v + ahead] != Flat_mesh::null)
-          CGAL_PENROSE_PREFETCH(&m.faces[m.vertex_face[v + ahead]]);
-        if(vh[v] != Vertex_handle()) vh[v]->set_face(fh(m.vertex_face[v]));
-      }
+    auto give_vertices_a_face = [&m, &made, &vh](internal::Penrose::Half_range vertices) {
+      for(std::size_t v = vertices.begin; v < vertices.end; ++v)
+        if(vh[v] != Vertex_handle()) vh[v]->set_face(made[m.vertex_face[v]]);
     };
     internal::Penrose::run_in_two_halves(vh.size() >= internal::Penrose::least_size_for_two_halves, [&](int half) {
-      link_faces(internal::Penrose::half_of(m.faces.size(), half));
+      write_faces(internal::Penrose::half_of(m.faces.size(), half));
       give_vertices_a_face(internal::Penrose::half_of(vh.size(), half));
     });
+    for(std::size_t f = 0; f < m.faces.size(); ++f)
+      if(!m.face_alive[f]) tds.faces().erase(made[f]);  // never a face of the triangulation
     std::vector<std::pair<Vertex_handle, Face_handle>> hull;  // infinite face (inf, b, a), keyed by b
     for(const auto& [f, i] : boundary) {
-      const Face_handle F = fh(f);
+      const Face_handle F = made[f];
       const Vertex_handle a = F->vertex(Flat_mesh::ccw(i)), b = F->vertex(Flat_mesh::cw(i));
       const Face_handle h = tds.create_face(infinite, b, a);
       h->set_neighbor(0, F);

@@ -399,7 +399,7 @@ TEST(Internals, TdsReservationReleasesThenMakesTheFacesOnAHelper)
     std::thread::id released_on;
     Reservation reservation(n, faces, [&released_on] { released_on = std::this_thread::get_id(); });
     const bool prepared = reservation.prepared();
-    const Reservation::Face_iterator middle = reservation.middle_face();
+    const Reservation::Faces& made = reservation.faces();
     const Tds& tds = reservation.tds();
     EXPECT_EQ(prepared, helped && n == large) << n;
     // the release always runs, on the helper where there is one
@@ -407,12 +407,37 @@ TEST(Internals, TdsReservationReleasesThenMakesTheFacesOnAHelper)
     EXPECT_EQ(tds.number_of_vertices(), 0u);
     EXPECT_EQ(tds.vertices().capacity() >= n, prepared);
     EXPECT_EQ(tds.faces().size(), prepared ? faces : 0u);
+    EXPECT_EQ(made.size(), prepared ? faces : 0u);
     if(prepared) {
-      EXPECT_EQ(std::size_t(std::distance(tds.faces().begin(), Tds::Face_iterator(middle))), faces / 2);
-      for(auto f = tds.faces().begin(); f != tds.faces().end(); ++f)
+      // the k-th face made is the k-th of the container, and empty
+      std::size_t k = 0;
+      for(auto f = tds.faces().begin(); f != tds.faces().end(); ++f, ++k) {
+        EXPECT_EQ(made[k], Tds::Face_handle(f));
         EXPECT_EQ(f->vertex(0), Tds::Vertex_handle());
+      }
     }
   }
+}
+
+TEST(Internals, CreationOrderHandlesFindEveryElementByRank)
+{
+  // Elements made in a container with holes (runs of one element, in the
+  // free list's order) and then in fresh blocks (long runs).
+  typedef CGAL::Penrose_Delaunay_triangulation_2<Epick>::Triangulation_data_structure Tds;
+  typedef CGAL::internal::Penrose::Creation_order_handles<Tds::Face_range> Handles;
+  Tds tds;
+  std::vector<Tds::Face_handle> early;
+  for(int i = 0; i < 3000; ++i) early.push_back(tds.create_face());
+  for(std::size_t i = 0; i < early.size(); i += 3) tds.delete_face(early[i]);
+  Handles made;
+  std::vector<Tds::Face_handle> expected;
+  for(int i = 0; i < 20000; ++i) {
+    expected.push_back(tds.create_face());
+    made.record(expected.back());
+  }
+  made.index();
+  ASSERT_EQ(made.size(), expected.size());
+  for(std::size_t k = 0; k < expected.size(); ++k) ASSERT_EQ(made[k], expected[k]) << k;
 }
 
 TEST(Internals, FastPredicatesNeverContradictEpick)

@@ -9,9 +9,11 @@
 // about 53 ms here, 15 ms once their storage is reserved. On a second core,
 // that cost overlaps with the Lawson flips, which touch nothing of the TDS.
 // The faces can be made there, not only reserved, since the flips change
-// their number no more than their storage: the calling thread then gives
-// them their vertices and neighbours, in two halves of the faces' container
-// on two threads, where creating them would have to be done by one.
+// their number no more than their storage: one for each slot of the flat
+// mesh's faces, in order, recorded in a Creation_order_handles, so that the
+// calling thread finds the TDS face of any flat face and gives them their
+// vertices and neighbours in two halves on two threads, where creating them
+// would have to be done by one.
 //
 // Before it reserves, the helper runs a job that frees memory the
 // construction no longer needs (unmapping 10^6 points' worth of the base
@@ -32,10 +34,10 @@
 #ifndef CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_TDS_RESERVATION_H
 #define CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_TDS_RESERVATION_H
 
+#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Creation_order_handles.h>
 #include <CGAL/Penrose_Delaunay_triangulation_2/internal/Helper_threads.h>
 
 #include <cstddef>
-#include <iterator>
 #include <type_traits>
 #include <utility>
 
@@ -54,7 +56,7 @@ template <class Tds>
 class Tds_reservation
 {
 public:
-  typedef typename Tds::Face_iterator Face_iterator;
+  typedef Creation_order_handles<typename Tds::Face_range> Faces;
 
   static constexpr std::size_t least_vertices = std::size_t(1) << 16;
 
@@ -100,12 +102,12 @@ public:
     return tds_;
   }
 
-  // Where prepared(), the first face of the second half of the faces, in
-  // the order of the faces' container: `faces / 2` faces come before it.
-  Face_iterator middle_face()
+  // Where prepared(), the faces of tds() in the order they were made,
+  // indexed; otherwise none. To be taken once.
+  Faces& faces()
   {
     wait();
-    return middle_;
+    return faces_;
   }
 
 private:
@@ -113,11 +115,12 @@ private:
   {
     try {
       tds_.vertices().reserve(vertices);
-      for(std::size_t f = 0; f < faces; ++f) tds_.create_face();
-      middle_ = std::next(tds_.faces().begin(), std::ptrdiff_t(faces / 2));
+      for(std::size_t f = 0; f < faces; ++f) faces_.record(tds_.create_face());
+      faces_.index();
       prepared_ = true;
     } catch(...) {  // out of memory, or a face's constructor threw: the caller will create them, or fail
       tds_.clear();
+      faces_ = Faces();
     }
   }
 
@@ -129,7 +132,7 @@ private:
   }
 
   Tds tds_;
-  Face_iterator middle_;
+  Faces faces_;
   bool prepared_ = false;
 #if defined(CGAL_PENROSE_HELPER_THREADS)
   std::thread helper_;
