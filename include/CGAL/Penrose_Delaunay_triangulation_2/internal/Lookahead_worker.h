@@ -11,6 +11,11 @@
 // caller as long as the caller does not call it itself meanwhile. Between
 // batches, the helper can also run one half of a walk in two halves.
 //
+// Once a batch is done, the helper may run an idle job, step after step,
+// until the caller starts the next batch or waits for the helper: work that
+// may be left unfinished, such as faulting in memory that the caller will
+// write.
+//
 // The caller's waits spin, or do what the caller gives them to do meanwhile:
 // they are short, and a sleeping thread takes tens of microseconds to wake.
 // The helper, once done with a batch, spins a little, then sleeps until the
@@ -51,6 +56,8 @@ class Lookahead_worker
 public:
   // `job(b, e)` does items b to e - 1 of the current batch.
   typedef std::function<void(std::size_t, std::size_t)> Job;
+  // a step of the idle job; false once there is nothing left to do
+  typedef std::function<bool()> Idle_step;
 
   // Starts the helper if `wanted`, threads are available, the process may
   // run on more than one core and a thread can be started; running() says.
@@ -86,17 +93,19 @@ public:
 #endif
   }
 
-  // Hands the helper the items 0 to n - 1, once it has left the last batch;
-  // without a helper, does them at once.
-  void start(std::size_t n, Job job)
+  // Hands the helper the items 0 to n - 1, and then `idle`, once it has
+  // left the last batch; without a helper, does the items at once and
+  // leaves `idle` undone.
+  void start(std::size_t n, Job job, Idle_step idle = Idle_step())
   {
 #if defined(CGAL_PENROSE_HELPER_THREADS)
     if(running()) {
       wait_until_idle();
-      hand_over(n, std::move(job));
+      hand_over(n, std::move(job), std::move(idle));
       return;
     }
 #endif
+    (void)idle;
     if(n > 0) job(0, n);
   }
 
@@ -155,6 +164,19 @@ public:
 #endif
   }
 
+  // Waits until the helper has left the last batch, done or failed, cutting
+  // its idle job short: only then may the next one change what the helper
+  // reads. What the batch threw is not rethrown here.
+  void wait_until_idle()
+  {
+#if defined(CGAL_PENROSE_HELPER_THREADS)
+    if(!running()) return;
+    interrupt_.store(true, std::memory_order_release);
+    unsigned spins = 0;
+    while(finished_.load(std::memory_order_acquire) != handed_) pause(spins);
+#endif
+  }
+
 private:
 #if defined(CGAL_PENROSE_HELPER_THREADS)
   static constexpr std::size_t chunk = 64;
@@ -166,10 +188,12 @@ private:
     else CGAL_PENROSE_SPIN_PAUSE();
   }
 
-  void hand_over(std::size_t n, Job job)
+  void hand_over(std::size_t n, Job job, Idle_step idle)
   {
     size_ = n;
     job_ = std::move(job);
+    idle_ = std::move(idle);
+    interrupt_.store(false, std::memory_order_relaxed);
     error_ = nullptr;
     seen_ = 0;
     done_.store(0, std::memory_order_relaxed);
@@ -182,14 +206,6 @@ private:
   {
     { std::lock_guard<std::mutex> lock(mutex_); }  // the helper sleeps, or sees the change before it would
     wake_.notify_one();
-  }
-
-  // Waits until the helper has left the last batch, done or failed: only
-  // then may the next one change what the helper reads.
-  void wait_until_idle()
-  {
-    unsigned spins = 0;
-    while(finished_.load(std::memory_order_acquire) != handed_) pause(spins);
   }
 
   void serve()
@@ -210,6 +226,8 @@ private:
         }
         done_.store(e, std::memory_order_release);
       }
+      if(idle_ && !failed_.load(std::memory_order_relaxed))
+        while(!interrupt_.load(std::memory_order_acquire) && !stop_.load(std::memory_order_acquire) && idle_()) {}
       finished_.store(served, std::memory_order_release);
     }
   }
@@ -238,6 +256,7 @@ private:
   // read by the helper at every spin, written by the caller once a batch
   alignas(64) std::atomic<unsigned> batch_{0};  // batches handed over
   std::atomic<bool> stop_{false};
+  std::atomic<bool> interrupt_{false};  // of the idle job
   // written by the helper once a chunk, read by the caller
   alignas(64) std::atomic<std::size_t> done_{0};
   std::atomic<unsigned> finished_{0};  // batches left
@@ -245,6 +264,7 @@ private:
   // written by the caller before a batch starts, read by the helper in it
   alignas(64) std::size_t size_ = 0;
   Job job_;
+  Idle_step idle_;
   // written by the helper before failed_, read by the caller after it
   std::exception_ptr error_;
   // where the helper sleeps between batches
