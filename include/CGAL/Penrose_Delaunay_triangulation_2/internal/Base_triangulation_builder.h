@@ -258,25 +258,39 @@ private:
     // each tile (on a Xeon, the base mesh took 190 instead of 127 ms).
     const Corners corners = this->corners();
     const Sampling_context* context = &c_;
-    helper.start(n, [corners, context, t, s, n, level](std::size_t b, std::size_t e) {
+    // what the surveys foresee of phase 1, for the helper's idle job
+    const std::shared_ptr<Phase_1_writes> writes = std::make_shared<Phase_1_writes>();
+    helper.start(n, [corners, context, t, s, n, level, writes](std::size_t b, std::size_t e) {
+      std::size_t children = 0, vertices = 0;
       for(std::size_t k = b; k < e; ++k) {
         if(k + ahead < n) fetch_corners(t[k + ahead], corners);
         s[k] = survey(*context, t[k], level, corners);
+        const unsigned refined = s[k].refined_children;
+        children += (refined & 1u) + (refined >> 1 & 1u) + (refined >> 2 & 1u);
+        vertices += refined != 0 ? std::size_t(rule(t[k].tile_type()).number_of_new_vertices) : std::size_t(s[k].kept);
       }
-    }, fresh_pages_of_phase_1(tiles, children));
+      writes->children += children;
+      writes->vertices += vertices;
+    }, fresh_pages_of_phase_1(children, writes));
     return true;
   }
 
-  // The helper's idle job once it has surveyed `tiles`, while the calling
-  // thread consumes the surveys in phase 1 of their level: it faults in the
-  // fresh pages that the calling thread will write there, the children
-  // (which the surveys count) and the new vertices' importances and targets
-  // (at most two a tile), then those of the next level's work array. Each
-  // range is faulted in from its end, towards the calling thread, which
-  // writes it from its start. At 10^6 points the calling thread took about
-  // 17,800 page faults in the base mesh without it.
-  Lookahead_worker::Idle_step fresh_pages_of_phase_1(const Scratch_vector<Tile>& tiles,
-                                                     const Scratch_vector<Tile>& children)
+  // The children that phase 1 of a level will write, and at most how many
+  // new vertices (two a tile), counted by the surveys on the helper.
+  struct Phase_1_writes
+  {
+    std::size_t children = 0, vertices = 0;
+  };
+
+  // The helper's idle job once it has surveyed a level, while the calling
+  // thread consumes the surveys in phase 1 of that level: it faults in the
+  // fresh pages that the calling thread will write there, the children and
+  // the new vertices' importances and targets, then those of the next
+  // level's work array. Each range is faulted in from its end, towards the
+  // calling thread, which writes it from its start. Without it, the calling
+  // thread took about 17,800 page faults in the base mesh at 10^6 points.
+  Lookahead_worker::Idle_step fresh_pages_of_phase_1(const Scratch_vector<Tile>& children,
+                                                     const std::shared_ptr<Phase_1_writes>& writes)
   {
     struct Bytes
     {
@@ -287,33 +301,23 @@ private:
       typedef typename std::decay_t<decltype(v)>::value_type T;
       return Bytes{reinterpret_cast<char*>(const_cast<T*>(v.data())), v.size() * sizeof(T), v.capacity() * sizeof(T)};
     };
-    const Tile* const t = tiles.data();
-    const Survey* const s = surveys_.data();
-    const std::size_t n = tiles.size();
     const std::array<Bytes, 4> arrays = {{bytes(children), bytes(importance_), bytes(target_), bytes(work_)}};
     // what is left to fault in, array by array: [begin, end)
     std::array<std::pair<char*, char*>, 4> left;
-    bool counted = false;
+    bool sized = false;
     return [=]() mutable {
       constexpr std::size_t step = std::size_t(1) << 18;
-      if(!counted) {
-        std::size_t children_count = 0, vertices = 0;
-        for(std::size_t k = 0; k < n; ++k) {
-          const unsigned refined = s[k].refined_children;
-          children_count += (refined & 1u) + (refined >> 1 & 1u) + (refined >> 2 & 1u);
-          vertices += refined != 0 ? std::size_t(rule(t[k].tile_type()).number_of_new_vertices) : std::size_t(s[k].kept);
-        }
-        const std::array<std::size_t, 4> needed = {{children_count * sizeof(Tile),
-                                                    arrays[1].in_use + vertices * sizeof(double),
-                                                    arrays[2].in_use + vertices * sizeof(std::pair<double, double>),
-                                                    children_count * sizeof(Work)}};
+      if(!sized) {
+        const std::array<std::size_t, 4> needed = {{writes->children * sizeof(Tile),
+                                                    arrays[1].in_use + writes->vertices * sizeof(double),
+                                                    arrays[2].in_use + writes->vertices * sizeof(std::pair<double, double>),
+                                                    writes->children * sizeof(Work)}};
         for(int a = 0; a < 4; ++a) {
           const Bytes& b = arrays[a];
           char* const end = b.data + (std::min)(needed[a], b.capacity);
           left[a] = {(std::min)(b.data + b.in_use, end), end};
         }
-        counted = true;
-        return true;
+        sized = true;
       }
       for(auto& [begin, end] : left) {
         if(begin == end) continue;
