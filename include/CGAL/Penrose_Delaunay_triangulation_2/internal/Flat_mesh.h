@@ -77,7 +77,7 @@ public:
   Index new_face()
   {
     if(free_.empty()) {
-      faces.push_back(Face());
+      faces.emplace_back();
       face_alive.push_back(1);
       return Index(faces.size() - 1);
     }
