@@ -72,17 +72,19 @@ On a machine with more than one core, a construction of at least
 \f$2^{16}\f$ points uses helper threads, one at a time:
 - during step 1, one that surveys the tiles of a level ahead of the
   calling thread (the density at their new vertices, which samples are kept,
-  which children are subdivided), while the calling thread builds the mesh.
-  The density (and its bound, if given) is then called from that thread, in
-  the same order as without it, and never from two threads at once;
+  which children are subdivided), while the calling thread builds the mesh,
+  and, once it has surveyed a level, faults in the memory that the calling
+  thread will write there. The density (and its bound, if given) is then
+  called from that thread, in the same order as without it, and never from
+  two threads at once;
 - during step 3, one that moves half of the samples, then looks for folded
   triangles among half of the faces;
 - during step 4, one that frees the arrays that served step 1 alone, then
   reserves the storage of the TDS's vertices and creates its faces, empty
-  (default-constructed): most of the cost of writing a TDS is the first
-  touch of its memory;
-- while the TDS is written, one that gives half of its faces their vertices,
-  then links them, and gives half of its vertices their face.
+  (default-constructed), one for each face of the flat mesh: most of the
+  cost of writing a TDS is the first touch of its memory;
+- while the TDS is written, one that gives half of its faces their vertices
+  and neighbours, and half of its vertices their face.
 
 The helpers create no vertex and call neither the traits nor the lift; the
 faces' default constructor is the only code of the TDS that runs on a
@@ -113,8 +115,10 @@ throughout.
         (for example `Exact_predicates_inexact_constructions_kernel`,
         `Exact_predicates_exact_constructions_kernel`,
         `Projection_traits_xy_3<K>` for terrains).
-\tparam Tds a model of `TriangulationDataStructure_2`; `Default` means the one
-        of `Delaunay_triangulation_2<Gt>`.
+\tparam Tds a `Triangulation_data_structure_2<Vb, Fb>`, with any vertex and
+        face bases (the construction finds its faces in their
+        `Compact_container` from the order it made them in); `Default` means
+        the one of `Delaunay_triangulation_2<Gt>`.
 */
 template <class Gt = Exact_predicates_inexact_constructions_kernel, class Tds_ = Default>
 class Penrose_Delaunay_triangulation_2
@@ -414,19 +418,21 @@ private:
                                                            Index on_boundary)
   {
     constexpr std::size_t ahead = Flat_mesh::fetch_distance;
-    const bool prepared = reservation.prepared();
-    Triangulation_data_structure& tds = this->tds();
-    tds.swap(reservation.tds());
-    const Vertex_handle infinite = tds.create_vertex();
-    this->set_infinite_vertex(infinite);
-    tds.set_dimension(2);
+    // the vertices first, while the helper may still make the faces
+    Triangulation_data_structure& prepared_tds = reservation.tds_for_vertices();
+    const Vertex_handle infinite = prepared_tds.create_vertex();
     internal::Penrose::Large_vector<Vertex_handle> vh(m.vertex_face.size());
     for(std::size_t v = 0; v < vh.size(); ++v)
       if(m.vertex_face[v] != Flat_mesh::null) {
-        vh[v] = tds.create_vertex();
+        vh[v] = prepared_tds.create_vertex();
         vh[v]->set_point(lift(m.points[v].x(), m.points[v].y()));
       }
     decltype(m.points)().swap(m.points);
+    const bool prepared = reservation.prepared();
+    Triangulation_data_structure& tds = this->tds();
+    tds.swap(reservation.tds());
+    this->set_infinite_vertex(infinite);
+    tds.set_dimension(2);
     // the edges without a face across, counter-clockwise
     std::vector<std::pair<Index, int>> boundary;
     Index next = on_boundary;

@@ -24,8 +24,9 @@
 //
 // What each tile's subdivision decides from the importance field alone (its
 // survey) is apart from the mesh: a helper thread, where there is one,
-// surveys a level's tiles ahead of the thread that builds the mesh. On the
-// last level, which leaves it nothing to survey while the triangles are
+// surveys a level's tiles ahead of the thread that builds the mesh, then
+// faults in the fresh memory that this thread will write for that level. On
+// the last level, which leaves it nothing to survey while the triangles are
 // made, it makes those of half of the tiles.
 
 #ifndef CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_BASE_TRIANGULATION_BUILDER_H

@@ -40,6 +40,10 @@
 #include <cstddef>
 #include <type_traits>
 #include <utility>
+#if defined(CGAL_PENROSE_HELPER_THREADS)
+#  include <atomic>
+#  include <thread>
+#endif
 
 namespace CGAL {
 namespace internal {
@@ -102,6 +106,18 @@ public:
     return tds_;
   }
 
+  // The TDS, whose vertices the caller may create while the helper may
+  // still make its faces: the vertices and the faces of a
+  // Triangulation_data_structure_2 are two containers, and the helper
+  // touches the vertices' only first, to reserve them. Waits until then.
+  Tds& tds_for_vertices()
+  {
+#if defined(CGAL_PENROSE_HELPER_THREADS)
+    while(helper_.joinable() && !vertices_reserved_.load(std::memory_order_acquire)) std::this_thread::yield();
+#endif
+    return tds_;
+  }
+
   // Where prepared(), the faces of tds() in the order they were made,
   // indexed; otherwise none. To be taken once.
   Faces& faces()
@@ -115,11 +131,17 @@ private:
   {
     try {
       tds_.vertices().reserve(vertices);
+    } catch(...) {  // out of memory: the caller will allocate them, or fail
+    }
+#if defined(CGAL_PENROSE_HELPER_THREADS)
+    vertices_reserved_.store(true, std::memory_order_release);
+#endif
+    try {
       for(std::size_t f = 0; f < faces; ++f) faces_.record(tds_.create_face());
       faces_.index();
       prepared_ = true;
     } catch(...) {  // out of memory, or a face's constructor threw: the caller will create them, or fail
-      tds_.clear();
+      tds_.faces().clear();
       faces_ = Faces();
     }
   }
@@ -135,6 +157,7 @@ private:
   Faces faces_;
   bool prepared_ = false;
 #if defined(CGAL_PENROSE_HELPER_THREADS)
+  std::atomic<bool> vertices_reserved_{false};
   std::thread helper_;
 #endif
 };
