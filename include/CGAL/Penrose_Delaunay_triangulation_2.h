@@ -474,12 +474,18 @@ private:
     CGAL_assertion(made.size() == m.faces.size());
     // Each face's vertices and neighbours, and each vertex's face, change no
     // container: bound by memory, they take two threads, in halves.
-    auto write_faces = [&m, &made, &vh](internal::Penrose::Half_range faces) {
+    // the dead faces, found on the way, are never faces of the triangulation
+    std::array<std::vector<std::size_t>, 2> dead;
+    auto write_faces = [&m, &made, &vh](internal::Penrose::Half_range faces,
+                                        std::vector<std::size_t>& dead_faces) {
       const std::size_t end = faces.end;
       for(std::size_t f = faces.begin; f < end; ++f) {
         if(f + ahead < end)
           for(Index v : m.faces[f + ahead].v) CGAL_PENROSE_PREFETCH(&vh[v]);
-        if(!m.face_alive[f]) continue;
+        if(!m.face_alive[f]) {
+          dead_faces.push_back(f);
+          continue;
+        }
         const Flat_mesh::Face& F = m.faces[f];
         const Face_handle h = made[f];
         h->set_vertices(vh[F.v[0]], vh[F.v[1]], vh[F.v[2]]);
@@ -492,11 +498,14 @@ private:
         if(vh[v] != Vertex_handle()) vh[v]->set_face(made[m.vertex_face[v]]);
     };
     internal::Penrose::run_in_two_halves(vh.size() >= internal::Penrose::least_size_for_two_halves, [&](int half) {
-      write_faces(internal::Penrose::half_of(m.faces.size(), half));
+      // the half's own list until the end: side by side, the two would take turns at a cache line
+      std::vector<std::size_t> dead_faces;
+      write_faces(internal::Penrose::half_of(m.faces.size(), half), dead_faces);
       give_vertices_a_face(internal::Penrose::half_of(vh.size(), half));
+      dead[half].swap(dead_faces);
     });
-    for(std::size_t f = 0; f < m.faces.size(); ++f)
-      if(!m.face_alive[f]) tds.faces().erase(made[f]);  // never a face of the triangulation
+    for(const auto& half : dead)
+      for(std::size_t f : half) tds.faces().erase(made[f]);
     std::vector<std::pair<Vertex_handle, Face_handle>> hull;  // infinite face (inf, b, a), keyed by b
     for(const auto& [f, i] : boundary) {
       const Face_handle F = made[f];

@@ -89,8 +89,9 @@ typedef std::uint64_t Suspect_edge;
 // line: inlined into the sweep, it made the sweep's common path (an edge
 // tested, not flipped) slower, 50 instead of 31 ms over a finished mesh of
 // 10^6 points (the ramp), and the flips took 3 ms longer.
-BOOST_NOINLINE inline std::size_t flip_from(Flat_mesh& m, Flat_mesh::Index f0, int i0, Flat_mesh::Index sweep,
-                             std::vector<Suspect_edge>& stack)
+BOOST_NOINLINE inline std::size_t flip_from(Flat_mesh& m, Flat_mesh::Index f0, int i0,
+                                            Flat_mesh::Index sweep,
+                                            std::vector<Suspect_edge>& stack)
 {
   typedef Flat_mesh::Index Index;
   std::size_t flips = 0;

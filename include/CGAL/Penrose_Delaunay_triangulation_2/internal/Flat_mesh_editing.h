@@ -14,6 +14,7 @@
 #include <CGAL/Penrose_Delaunay_triangulation_2/internal/Flat_mesh.h>
 #include <CGAL/Penrose_Delaunay_triangulation_2/internal/Two_halves.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <vector>
@@ -129,7 +130,7 @@ public:
         if(m_.face_alive[f] && !positive(f)) folded_in[half].push_back(f);
       }
     });
-    std::vector<Index> folded = std::move(folded_in[0]), next;
+    std::vector<Index> folded = std::move(folded_in[0]), next, sent_back;
     folded.insert(folded.end(), folded_in[1].begin(), folded_in[1].end());
     while(!folded.empty()) {
       next.clear();
@@ -139,6 +140,7 @@ public:
           const Index u = m_.faces[f].v[i];
           if(state[u] != 1) continue;
           state[u] = 2;
+          sent_back.push_back(u);
           trade(u);
           faces_around(u, next);
         }
@@ -148,8 +150,8 @@ public:
     }
     std::vector<Index> unplaced;
     repaired = 0;
-    for(Index u = 0; u < n; ++u) {
-      if(state[u] != 2) continue;
+    std::sort(sent_back.begin(), sent_back.end());  // moved in the order of the vertices
+    for(Index u : sent_back) {
       bool r = false;
       if(!move_vertex(u, target[u].first, target[u].second, r)) unplaced.push_back(u);
       if(r) ++repaired;
