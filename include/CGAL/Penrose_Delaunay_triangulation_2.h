@@ -282,7 +282,6 @@ public:
     const std::size_t live = stats_.base_vertices + frame.size() - stats_.removed_vertices;
     // blocks kept from an earlier construction and not taken by this one would add to its peak
     internal::Penrose::release_kept_blocks();
-    // the builder and the targets are freed on the helper, where there is one (1 ms for the targets at 10^6 points)
     Reservation reservation(live + 1, mesh.faces.size(), [&builder, &target] {
       builder.reset();
       decltype(target)().swap(target);
@@ -353,24 +352,20 @@ private:
   template <class Kept>
   static std::vector<Index> inactive_vertices(const Flat_mesh& mesh, std::size_t n, const Kept& kept, std::size_t& in_mesh)
   {
-    std::array<std::vector<Index>, 2> inactive;
     std::array<std::size_t, 2> count = {{0, 0}};
-    internal::Penrose::run_in_two_halves(n >= internal::Penrose::least_size_for_two_halves, [&](int half) {
-      // the halves' own copies until the end: side by side, the two would take turns at a cache line
-      std::vector<Index> found;
-      std::size_t present = 0;
-      const internal::Penrose::Half_range vertices = internal::Penrose::half_of(n, half);
-      for(std::size_t v = vertices.begin; v < vertices.end; ++v)
-        if(mesh.vertex_face[v] != Flat_mesh::null) {
-          ++present;
-          if(!kept(v)) found.push_back(Index(v));
-        }
-      inactive[half].swap(found);
-      count[half] = present;
-    });
+    std::vector<Index> inactive = internal::Penrose::gather_in_two_halves<Index>(
+      n >= internal::Penrose::least_size_for_two_halves, [&](int half, std::vector<Index>& found) {
+        std::size_t present = 0;
+        const internal::Penrose::Half_range vertices = internal::Penrose::half_of(n, half);
+        for(std::size_t v = vertices.begin; v < vertices.end; ++v)
+          if(mesh.vertex_face[v] != Flat_mesh::null) {
+            ++present;
+            if(!kept(v)) found.push_back(Index(v));
+          }
+        count[half] = present;
+      });
     in_mesh = count[0] + count[1];
-    inactive[0].insert(inactive[0].end(), inactive[1].begin(), inactive[1].end());
-    return std::move(inactive[0]);
+    return inactive;
   }
 
   struct No_vertex_visitor
@@ -477,16 +472,14 @@ private:
     CGAL_assertion(made.size() == m.faces.size());
     // Each face's vertices and neighbours, and each vertex's face, change no
     // container: bound by memory, they take two threads, in halves.
-    // the dead faces, found on the way, are never faces of the triangulation
-    std::array<std::vector<std::size_t>, 2> dead;
-    auto write_faces = [&m, &made, &vh](internal::Penrose::Half_range faces,
-                                        std::vector<std::size_t>& dead_faces) {
+    // The dead faces, found on the way, are never faces of the triangulation.
+    auto write_faces = [&m, &made, &vh](internal::Penrose::Half_range faces, std::vector<Index>& dead) {
       const std::size_t end = faces.end;
       for(std::size_t f = faces.begin; f < end; ++f) {
         if(f + ahead < end)
           for(Index v : m.faces[f + ahead].v) CGAL_PENROSE_PREFETCH(&vh[v]);
         if(!m.face_alive[f]) {
-          dead_faces.push_back(f);
+          dead.push_back(Index(f));
           continue;
         }
         const Flat_mesh::Face& F = m.faces[f];
@@ -500,15 +493,12 @@ private:
       for(std::size_t v = vertices.begin; v < vertices.end; ++v)
         if(vh[v] != Vertex_handle()) vh[v]->set_face(made[m.vertex_face[v]]);
     };
-    internal::Penrose::run_in_two_halves(vh.size() >= internal::Penrose::least_size_for_two_halves, [&](int half) {
-      // the half's own list until the end: side by side, the two would take turns at a cache line
-      std::vector<std::size_t> dead_faces;
-      write_faces(internal::Penrose::half_of(m.faces.size(), half), dead_faces);
-      give_vertices_a_face(internal::Penrose::half_of(vh.size(), half));
-      dead[half].swap(dead_faces);
-    });
-    for(const auto& half : dead)
-      for(std::size_t f : half) tds.faces().erase(made[f]);
+    const std::vector<Index> dead = internal::Penrose::gather_in_two_halves<Index>(
+      vh.size() >= internal::Penrose::least_size_for_two_halves, [&](int half, std::vector<Index>& dead_in_half) {
+        write_faces(internal::Penrose::half_of(m.faces.size(), half), dead_in_half);
+        give_vertices_a_face(internal::Penrose::half_of(vh.size(), half));
+      });
+    for(Index f : dead) tds.faces().erase(made[f]);
     std::vector<std::pair<Vertex_handle, Face_handle>> hull;  // infinite face (inf, b, a), keyed by b
     for(const auto& [f, i] : boundary) {
       const Face_handle F = made[f];

@@ -120,18 +120,16 @@ public:
           state[v] = 1;
         }
     });
-    std::array<std::vector<Index>, 2> folded_in;
-    run_in_two_halves(worth_a_thread, [&](int half) {
+    std::vector<Index> folded = gather_in_two_halves<Index>(worth_a_thread, [&](int half, std::vector<Index>& found) {
       const Half_range faces = half_of(m_.faces.size(), half);
       const Index end = Index(faces.end);
       for(Index f = Index(faces.begin); f < end; ++f) {
         if(f + Flat_mesh::fetch_distance < end)
           for(Index u : m_.faces[f + Flat_mesh::fetch_distance].v) CGAL_PENROSE_PREFETCH(&m_.points[u]);
-        if(m_.face_alive[f] && !positive(f)) folded_in[half].push_back(f);
+        if(m_.face_alive[f] && !positive(f)) found.push_back(f);
       }
     });
-    std::vector<Index> folded = std::move(folded_in[0]), next, sent_back;
-    folded.insert(folded.end(), folded_in[1].begin(), folded_in[1].end());
+    std::vector<Index> next, sent_back;
     while(!folded.empty()) {
       next.clear();
       for(Index f : folded) {

@@ -4,7 +4,8 @@
 // A walk split in two halves, the second on a helper thread: for the walks
 // whose halves write disjoint data (the links of the TDS written from the
 // flat mesh; the moves of the samples, and the search for folded faces
-// after them). A thread is started for each walk, which the callers do only
+// after them), or gather what they find apart (the vertices to remove, the
+// folded faces, the dead faces). A thread is started for each walk, which the callers do only
 // for walks of least_size_for_two_halves items or more, like the other
 // helpers. Whether a helper is used follows the rules of Tds_reservation.h
 // (Helper_threads.h, and none on a machine with one core). The base mesh's
@@ -16,8 +17,10 @@
 
 #include <CGAL/Penrose_Delaunay_triangulation_2/internal/Helper_threads.h>
 
+#include <array>
 #include <cstddef>
 #include <exception>
+#include <vector>
 
 namespace CGAL {
 namespace internal {
@@ -67,6 +70,24 @@ void run_in_two_halves(bool worth_a_thread, const Half& half)
 #endif
   half(0);
   half(1);
+}
+
+// Runs `half(h, found)` for the halves h = 0 and 1 as run_in_two_halves()
+// does, each half with a vector `found` of its own, and returns the two
+// vectors one after the other. Each half has its vector apart until it
+// ends: side by side, the two vectors' ends would share a cache line, which
+// the threads would take turns at.
+template <class T, class Half>
+std::vector<T> gather_in_two_halves(bool worth_a_thread, const Half& half)
+{
+  std::array<std::vector<T>, 2> found;
+  run_in_two_halves(worth_a_thread, [&half, &found](int h) {
+    std::vector<T> own;
+    half(h, own);
+    found[h].swap(own);
+  });
+  found[0].insert(found[0].end(), found[1].begin(), found[1].end());
+  return std::move(found[0]);
 }
 
 } // namespace Penrose
