@@ -69,7 +69,7 @@ It is a `Delaunay_triangulation_2<Gt, Tds>`: every operation of that class
 works on it after construction.
 
 On a machine with more than one core, a construction of at least
-\f$2^{16}\f$ points uses helper threads, one at a time:
+2<sup>16</sup> points uses helper threads, one at a time:
 - during step 1, one that surveys the tiles of a level ahead of the
   calling thread (the density at their new vertices, which samples are kept,
   which children are subdivided), while the calling thread builds the mesh,
@@ -99,7 +99,7 @@ calling thread.
 
 A construction that would not fit in the machine's memory (its peak is
 about 220 bytes per point with the default TDS), or that has more than
-about \f$1.7 \times 10^9\f$ points, is refused before anything is allocated:
+about 1.7 x 10<sup>9</sup> points, is refused before anything is allocated:
 the constructors and `build()` throw `std::length_error`. The base mesh
 follows the tile tree rather than the points, and a `density_upper_bound`
 far above the density refines tiles that hold no point: a mesh that would
@@ -221,7 +221,7 @@ public:
   \return `false` if `callback` stopped the construction, `true` otherwise.
   \throws std::length_error, leaving the triangulation as it was, if the
   construction would need more memory than the machine has, or more than
-  about \f$1.7 \times 10^9\f$ points; leaving it empty, if its base mesh
+  about 1.7 x 10<sup>9</sup> points; leaving it empty, if its base mesh
   would outgrow them.
   \throws what sampling throws (a bad density, tiles too fine for the
   coordinates: see `Penrose_importance_sampler`), leaving the triangulation

@@ -47,9 +47,9 @@ Sampling (`operator()`, `samples()`, `tile_tree()` and the constructions of
 `Penrose_Delaunay_triangulation_2`) throws `std::invalid_argument`, naming
 the point and the value, where the density is negative, NaN or infinite,
 or where, scaled, it exceeds what the 30 levels of the tile tree can
-represent: about \f$4 \times 10^{11} / L^2\f$ points per unit area, \f$L\f$
-being the longer side of the region (about \f$4 \times 10^{11}\f$ points in
-a square region, \f$k\f$ times fewer in a region \f$k\f$ times longer than
+represent: about 4 x 10<sup>11</sup> / <i>L</i><sup>2</sup> points per unit area, <i>L</i>
+being the longer side of the region (about 4 x 10<sup>11</sup> points in
+a square region, <i>k</i> times fewer in a region <i>k</i> times longer than
 wide). `tile_tree()` throws `std::length_error` before its arrays would
 outgrow the machine's memory or their 32-bit indices, which a
 `density_upper_bound` far above the density can cause: it refines tiles
@@ -120,7 +120,7 @@ public:
     \cgalParamNBegin{maximum_number}
       \cgalParamDescription{the largest expected number of points accepted; a larger request throws `std::length_error` before anything is allocated}
       \cgalParamType{`std::size_t`}
-      \cgalParamDefault{\f$10^8\f$}
+      \cgalParamDefault{10<sup>8</sup>}
     \cgalParamNEnd
     \cgalParamNBegin{use_correction_vectors}
       \cgalParamDescription{whether samples are moved by their correction vectors}

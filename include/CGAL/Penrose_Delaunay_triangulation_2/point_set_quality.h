@@ -46,7 +46,7 @@ struct Spacing
 };
 
 /// \ingroup PkgPenroseDelaunayTriangulation2Quality
-/// The spacing of `n` points in a hexagonal packing of `area`: \f$\sqrt{2 A / (\sqrt{3} n)}\f$.
+/// The spacing of `n` points in a hexagonal packing of `area`: sqrt(2 `area` / (sqrt(3) `n`)).
 inline double packing_distance(std::size_t n, double area)
 {
   return std::sqrt(2. * area / (std::sqrt(3.) * double(n)));
