@@ -256,7 +256,7 @@ private:
     // The job reads nothing through this builder or the mesh: the calling
     // thread writes the ends of their vectors at every vertex, and a read of
     // a word beside them would move that cache line between the cores at
-    // each tile (on a Xeon, the base mesh took 190 instead of 127 ms).
+    // each tile (false sharing, which slowed the whole base mesh).
     const Corners corners = this->corners();
     const Sampling_context* context = &c_;
     // what the surveys foresee of phase 1, for the helper's idle job
@@ -288,8 +288,8 @@ private:
   // fresh pages that the calling thread will write there, the children and
   // the new vertices' importances and targets, then those of the next
   // level's work array. Each range is faulted in from its end, towards the
-  // calling thread, which writes it from its start. Without it, the calling
-  // thread took about 17,800 page faults in the base mesh at 10^6 points.
+  // calling thread, which writes it from its start, so that the calling
+  // thread takes fewer of the base mesh's page faults itself.
   Lookahead_worker::Idle_step fresh_pages_of_phase_1(const Scratch_vector<Tile>& children,
                                                      const std::shared_ptr<Phase_1_writes>& writes)
   {

@@ -13,12 +13,11 @@
 // permanent of the determinant. Both are rounded up (to 3.5e-16 and
 // 1.25e-15), which also covers the terms that underflow while the permanent
 // is at least 1e-200; below that, or where it may overflow, nothing is
-// decided. The filters cost less than Epick's static filters: in a 10^6-point
-// construction the flips take 79 instead of 93 ms for the constant density
-// (88 instead of 121 for the ramp), and the moves and removals 3 to 5 ms
-// less. They decide all of its 4.7 million in-circle tests,
-// and all but 638 of its 2.2 million orientation tests (points on the
-// edges that the tiles split, collinear up to rounding).
+// decided. The filters cost less than Epick's static filters, which the
+// flips, moves and removals call millions of times, and in a construction
+// they decide all the in-circle tests and all but a few hundred of the
+// orientation tests (points on the edges that the tiles split, collinear up
+// to rounding).
 
 #ifndef CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_FAST_PREDICATES_H
 #define CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_FAST_PREDICATES_H

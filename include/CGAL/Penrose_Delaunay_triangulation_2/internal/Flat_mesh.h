@@ -40,15 +40,15 @@ public:
   typedef Exact_predicates_inexact_constructions_kernel::Point_2 Point;
   static constexpr Index null = 0xffffffffu;
   // how many elements ahead a walk in memory order fetches what it will read
-  // (at 10^6 points, 32 took the steps after the base mesh 3.6 ms less than 16,
-  // mostly in writing the TDS; 24 and 48 did about as well as 32)
+  // (16 is too short for the fetches to arrive in time, mostly in writing
+  // the TDS; 24 to 48 do about as well as 32)
   static constexpr Index fetch_distance = 32;
 
   struct Face
   {
     typedef std::array<Index, 3> Indices;
     // left as it is: every face is written (reset_face()) before it is read,
-    // and zeroing the last level's appended faces took the base mesh 3 ms
+    // and zeroing the last level's appended faces would be a walk for nothing
     Face() {}
     Indices v;
     Indices n;

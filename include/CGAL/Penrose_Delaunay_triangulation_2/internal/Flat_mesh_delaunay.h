@@ -54,7 +54,7 @@ inline Oriented_side perturbed_side_of_oriented_circle(const Epick::Point_2& p0,
 // circle of the face across, which must exist, as Triangulation_2 decides
 // it: the points in the order of the face across. Out of line: the flips'
 // rare path, which, inlined, took registers and code space from the common
-// one (the flips of a 10^6-point construction took 4 to 6 ms longer).
+// one and made the flips slower.
 BOOST_NOINLINE inline bool is_in_circle_across(const Flat_mesh& m, Flat_mesh::Index f, int i)
 {
   const Flat_mesh::Face& G = m.faces[m.faces[f].n[i]];
@@ -87,8 +87,7 @@ typedef std::uint64_t Suspect_edge;
 // edge one of whose faces comes after face `sweep` is left to the sweep of
 // make_delaunay(), which tests it when it reaches the last of them. Out of
 // line: inlined into the sweep, it made the sweep's common path (an edge
-// tested, not flipped) slower, 50 instead of 31 ms over a finished mesh of
-// 10^6 points (the ramp), and the flips took 3 ms longer.
+// tested, not flipped) much slower, and the flips themselves no faster.
 BOOST_NOINLINE inline std::size_t flip_from(Flat_mesh& m, Flat_mesh::Index f0, int i0,
                                             Flat_mesh::Index sweep,
                                             std::vector<Suspect_edge>& stack)
@@ -120,9 +119,8 @@ BOOST_NOINLINE inline std::size_t flip_from(Flat_mesh& m, Flat_mesh::Index f0, i
 // Delaunay when one of its faces changes, and then it is either on the
 // stack or still ahead of the sweep. Tested from its last face rather than
 // its first, an edge reads a face across that the sweep has passed, often
-// still in the caches, and fewer edges go through the stack: at 10^6 points
-// the flips took 49.5 instead of 61.7 ms (constant density) and 69.1 instead
-// of 79.0 (the ramp), for the same triangulation.
+// still in the caches, and fewer edges go through the stack; the
+// triangulation is the same.
 inline std::size_t make_delaunay(Flat_mesh& m)
 {
   typedef Flat_mesh::Index Index;

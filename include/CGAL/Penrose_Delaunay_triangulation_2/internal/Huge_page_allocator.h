@@ -4,9 +4,9 @@
 // Allocators for the construction's large flat arrays (a few to tens of
 // bytes per point each): those that live to the end of a construction are
 // backed by transparent huge pages, the others by small pages. The construction touches each such array once at growth and then
-// walks it with little reuse: with 4 KiB pages, a fresh process spends about
-// a fifth of the construction in page faults (85,000 of them at 10^6
-// points), and each walk misses the TLB. Huge pages (2 MiB) remove both
+// walks it with little reuse: with 4 KiB pages, a fresh process spends a
+// large share of the construction in page faults, and each walk misses the
+// TLB. Huge pages (2 MiB) remove both
 // costs where the system offers them (transparent_hugepage set to `always`
 // or `madvise`); elsewhere, and for small arrays, this is std::allocator.
 // Define CGAL_PENROSE_NO_HUGE_PAGES to use std::allocator always.
@@ -15,9 +15,9 @@
 // of the same size: a construction needs the same arrays as the last one of
 // its size. On a virtual machine that hands free memory back to its host
 // (free page reporting), a fresh huge page may be one the host took back:
-// its first touch then costs a host fault, here about 2 ms per MiB instead
-// of 0.05 (0.54 GB/s against 21 GB/s, 200 MiB to 3 GiB touched), and a base
-// mesh took 0.25 s instead of 0.12 at random. The kernel serves huge pages
+// its first touch then costs a host fault, tens of times slower than a
+// page freed shortly before, and a base mesh on such pages may take twice
+// as long. The kernel serves huge pages
 // from whole free 2 MiB blocks, the very ones it reports to the host, and
 // small pages from memory freed shortly before, which it has not reported:
 // so only the arrays that live to the end of a construction are on huge
@@ -28,8 +28,7 @@
 // a construction calls it before the storage of its TDS is reserved, its
 // peak, so that the peak is the same as without keeping them. (Marking the
 // kept blocks MADV_FREE instead, so that the kernel could take them back,
-// made the next constructions slower: 0.40 s instead of 0.13 s for the
-// first one's base mesh.)
+// made the next constructions' base meshes several times slower.)
 
 #ifndef CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_HUGE_PAGE_ALLOCATOR_H
 #define CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_HUGE_PAGE_ALLOCATOR_H

@@ -22,11 +22,10 @@
 #include <string>
 #include <vector>
 
-// For the few functions that every tile's refinement calls: Clang 14 left
-// them out of line, and the sampler took 9 to 12% longer than with them
-// inlined (the construction, whose surveys call them on a helper thread, up
-// to 1.5%; PERFORMANCE_LOG.md of the benchmarks, session 36). G++ 12
-// inlines them on its own.
+// For the few functions that every tile's refinement calls: Clang 14 leaves
+// them out of line, which makes the sampler about a tenth slower than with
+// them inlined (the construction, whose surveys call them on a helper
+// thread, much less). G++ 12 inlines them on its own.
 #if defined(__clang__)
 #  define CGAL_PENROSE_HOT_INLINE __attribute__((always_inline)) inline
 #else

@@ -5,8 +5,8 @@
 // empty, on a helper thread while the construction finishes its flat mesh.
 // Most of the cost of writing a TDS is the first touch of its storage: page
 // faults, and the free list that Compact_container threads through every
-// new block. Creating 10^6 vertices and 2 x 10^6 faces in a fresh TDS takes
-// about 53 ms here, 15 ms once their storage is reserved. On a second core,
+// new block: creating the vertices and faces of a fresh TDS takes several
+// times as long as once their storage is reserved. On a second core,
 // that cost overlaps with the Lawson flips, which touch nothing of the TDS.
 // The faces can be made there, not only reserved, since the flips change
 // their number no more than their storage: one for each slot of the flat
@@ -16,15 +16,15 @@
 // would have to be done by one.
 //
 // Before it reserves, the helper runs a job that frees memory the
-// construction no longer needs (unmapping 10^6 points' worth of the base
-// mesh builder's arrays takes about 9 ms): freed there, that memory is gone
+// construction no longer needs (unmapping the base mesh builder's arrays
+// takes milliseconds): freed there, that memory is gone
 // before the reservation touches any, and the peak is the same as if the
 // calling thread had freed it.
 //
 // Nothing is prepared (the TDS is empty, and prepared() false) below
-// `least_vertices`, where starting a thread costs more than it saves (at
-// 10^3 points a construction took 12% longer with it, at 3 x 10^4 2% longer,
-// at 10^5 6 to 35% shorter); without threads (CGAL_HAS_NO_THREADS), or where
+// `least_vertices`, where starting a thread costs more than it saves (with
+// it, constructions of 3 x 10^4 points or fewer were slower, those of 10^5
+// faster); without threads (CGAL_HAS_NO_THREADS), or where
 // the user asks for none (CGAL_PENROSE_NO_HELPER_THREAD); on a machine with
 // one core; where no thread can be started; for a TDS whose vertex container
 // has no reserve(); and if the helper runs out of memory, or a face's
