@@ -6,6 +6,8 @@
 #
 # --quick: sizes up to 10^5 (under a minute); default: 10^3 to 4 x 10^6.
 # --out:   where results.csv, the plots and the quality report go (default benchmark-results).
+# The last full run's results.csv, ratios.md and quality summaries are kept in
+# benchmark/Penrose_Delaunay_triangulation_2/results/, under the same names.
 # Installs what is missing (Debian packages), builds in Release, checks the
 # triangulation against CGAL's on each input at 10^6 points (10^5 with
 # --quick; check.txt), runs every (input, size, method) in its own process,
