@@ -157,11 +157,18 @@ TEST(HeightField, AsciiGridCentresAndNodata)
   EXPECT_EQ(r.y1, 23.);
 }
 
+TEST(HeightField, AsciiGridRowsByLine)
+{
+  write_file(temp("crlf.asc"), "ncols 2\r\nnrows 2\r\nxllcorner 0\r\nyllcorner 0\r\ncellsize 1\r\n\r\n1 2\r\n\r\n3 4 \r\n\n");
+  EXPECT_EQ(IO::read_height_field(temp("crlf.asc")).values, (std::vector<double>{1, 2, 3, 4}));
+}
+
 TEST(HeightField, BadFiles)
 {
   auto read = [](const std::string& f) { IO::read_height_field(f); };
   expect_failure(read, temp("missing.png"), "cannot open");
   expect_failure(read, temp("missing.asc"), "cannot open");
+  expect_failure(read, ::testing::TempDir(), "is a directory");
   IO::write_height_field(temp("good.png"), ramp_field(40, 40));
   write_file(temp("png.asc"), read_file(temp("good.png")));
   expect_failure(read, temp("png.asc"), "not an ESRI ASCII grid");
@@ -190,8 +197,12 @@ TEST(HeightField, BadFiles)
     {"huge.pgm", "P5\n1000000 1000000\n65535\n\x01\x02", "absurd dimensions 1000000 x 1000000"},
     {"zero.pgm", "P5\n0 5\n255\n", "absurd dimensions 0 x 5"},
     {"huge.asc", "ncols 100000000\nnrows 100000000\nxllcorner 0\nyllcorner 0\ncellsize 1\n1 2 3\n", "absurd dimensions"},
-    {"short.asc", std::string(header) + "cellsize 1\n1 2 3 4 5\n", "truncated: 5 of 6 values"},
-    {"word.asc", std::string(header) + "cellsize 1\n1 2 x 4 5 6\n", "value 3 is not a number"},
+    {"short.asc", std::string(header) + "cellsize 1\n1 2 3\n", "truncated: 1 of 2 rows"},
+    {"long.asc", std::string(header) + "cellsize 1\n1 2 3 4 5\n6\n", "line 6: more values than ncols (3)"},
+    {"row.asc", std::string(header) + "cellsize 1\n1 2 3\n4 5\n", "line 7: 2 values where ncols is 3"},
+    {"rows.asc", std::string(header) + "cellsize 1\n1 2 3\n4 5 6\n\n7 8 9\n", "line 9: more rows than nrows (2)"},
+    {"word.asc", std::string(header) + "cellsize 1\n1 2 x\n4 5 6\n", "line 6: value 3 is not a number"},
+    {"extent.asc", std::string(header) + "cellsize 1e308\n1 2 3\n4 5 6\n", "extent"},
     {"cell.asc", std::string(header) + "cellsize -1\n1 2 3 4 5 6\n", "cellsize must be positive"},
     {"corner.asc", "ncols 3\nnrows 2\ncellsize 1\n1 2 3 4 5 6\n", "xllcorner"},
     {"void.asc", "ncols 2\nnrows 1\nxllcorner 0\nyllcorner 0\ncellsize 1\nnodata_value -1\n-1 -1\n", "every cell is NODATA"}};
@@ -255,6 +266,75 @@ TEST(Image, RadianceHdr)
   const IO::Luminance_image lum = IO::read_luminance_image(temp("light.hdr"));
   EXPECT_TRUE(lum.high_dynamic_range);
   EXPECT_NEAR(lum.values[1], 0.2126 * 100 + 0.7152 * 200 + 0.0722 * 300, 2.);
+}
+
+// Run-length encoded scanlines (8 to 32767 pixels wide) are read as stb_image reads them.
+TEST(Image, RadianceHdrRunLengthEncoded)
+{
+  std::vector<float> rgb(3 * 64 * 5);
+  for(std::size_t k = 0; k < rgb.size(); ++k) rgb[k] = k % 7 == 0 ? 0.f : float(k % 13) * (k % 3 == 0 ? 40.f : 0.01f);
+  ASSERT_TRUE(stbi_write_hdr(temp("rle.hdr").c_str(), 64, 5, 3, rgb.data()));
+  const std::string bytes = read_file(temp("rle.hdr"));
+  int w = 0, h = 0, c = 0;
+  float* expected = stbi_loadf_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()), int(bytes.size()),
+                                           &w, &h, &c, 3);
+  ASSERT_TRUE(expected);
+  const IO::Rgb_image img = IO::read_rgb_image(temp("rle.hdr"));
+  ASSERT_EQ(img.values.size(), rgb.size());
+  EXPECT_EQ(img.values, std::vector<float>(expected, expected + rgb.size()));
+  stbi_image_free(expected);
+}
+
+// The dimensions of the JPEG `bytes` (its first SOF0 segment) set to w x h.
+std::string with_jpeg_size(std::string bytes, unsigned w, unsigned h)
+{
+  const std::size_t sof = bytes.find("\xff\xc0");
+  bytes[sof + 5] = char(h >> 8); bytes[sof + 6] = char(h & 0xff);
+  bytes[sof + 7] = char(w >> 8); bytes[sof + 8] = char(w & 0xff);
+  return bytes;
+}
+
+// Headers that claim more pixels than the file holds are refused before
+// stb_image allocates them, and files cut short are refused, not decoded.
+TEST(Image, TruncatedFilesAndLyingHeaders)
+{
+  auto read = [](const std::string& f) { IO::read_rgb_image(f); };
+  std::vector<unsigned char> noise(64 * 64 * 3);
+  for(std::size_t k = 0; k < noise.size(); ++k) noise[k] = (unsigned char)(k * 7919 % 251);
+  ASSERT_TRUE(stbi_write_jpg(temp("noise.jpg").c_str(), 64, 64, 3, noise.data(), 90));
+  const std::string jpg = read_file(temp("noise.jpg"));
+  write_file(temp("cut.jpg"), jpg.substr(0, jpg.size() / 2));
+  expect_failure(read, temp("cut.jpg"), "no end-of-image marker");
+  write_file(temp("16384.jpg"), with_jpeg_size(jpg, 16384, 16384));
+  expect_failure(read, temp("16384.jpg"), "absurd dimensions 16384 x 16384");
+  write_file(temp("8192.jpg"), with_jpeg_size(jpg, 8192, 8192));
+  expect_failure(read, temp("8192.jpg"), "cannot hold its 8192 x 8192 pixels");
+  ASSERT_TRUE(stbi_write_png(temp("noise.png").c_str(), 64, 64, 3, noise.data(), 64 * 3));
+  std::string png = read_file(temp("noise.png")).substr(0, 57);  // the IHDR, bytes 16 to 23: width, height
+  png[16] = png[17] = png[20] = png[21] = '\0'; png[18] = png[22] = '\x1f'; png[19] = png[23] = '\x40';
+  write_file(temp("8000.png"), png);
+  expect_failure(read, temp("8000.png"), "cannot hold its 8000 x 8000 pixels");
+
+  std::vector<float> rgb(3 * 64 * 8, 0.25f);
+  ASSERT_TRUE(stbi_write_hdr(temp("rle.hdr").c_str(), 64, 8, 3, rgb.data()));
+  const std::string rle = read_file(temp("rle.hdr"));
+  write_file(temp("cut_rle.hdr"), rle.substr(0, rle.size() - 20));
+  expect_failure(read, temp("cut_rle.hdr"), "truncated: 6 of 8 scanlines");
+  ASSERT_TRUE(stbi_write_hdr(temp("flat.hdr").c_str(), 4, 2, 3, rgb.data()));
+  const std::string flat = read_file(temp("flat.hdr"));
+  write_file(temp("cut_flat.hdr"), flat.substr(0, flat.size() - 1));
+  expect_failure(read, temp("cut_flat.hdr"), "truncated: 1 of 2 scanlines");
+  write_file(temp("no_pixels.hdr"), flat.substr(0, flat.size() - 32));
+  expect_failure(read, temp("no_pixels.hdr"), "truncated: 0 of 2 scanlines");
+  write_file(temp("16384.hdr"), "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 16384 +X 16384\n\x02\x02\x40");
+  expect_failure(read, temp("16384.hdr"), "absurd dimensions 16384 x 16384");
+  write_file(temp("8000.hdr"), "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 8000 +X 8000\n\x02\x02\x1f\x40\x80");
+  expect_failure(read, temp("8000.hdr"), "truncated: 0 of 8000 scanlines");
+  write_file(temp("zero_run.hdr"), std::string("#?RADIANCE\n\n-Y 1 +X 8\n\x02\x02\x00\x08\x00\x00", 28));
+  expect_failure(read, temp("zero_run.hdr"), "corrupt Radiance HDR run");
+  write_file(temp("xyz.hdr"), "#?RADIANCE\nFORMAT=32-bit_rle_xyze\n\n-Y 1 +X 1\n\x01\x01\x01\x80");
+  expect_failure(read, temp("xyz.hdr"), "unsupported FORMAT=32-bit_rle_xyze");
+  expect_failure(read, ::testing::TempDir(), "is a directory");
 }
 
 TEST(Image, BadFiles)

@@ -8,6 +8,7 @@
 #define CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_IO_HEIGHT_FIELD_IO_H
 
 #include <CGAL/Penrose_Delaunay_triangulation_2/IO/internal/file_names.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/IO/internal/image_checks.h>
 
 #include <stb/stb_image.h>
 
@@ -19,16 +20,29 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <limits>
 #include <memory>
+#include <new>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 namespace CGAL {
 namespace IO {
+
+/*!
+\ingroup PkgPenroseDelaunayTriangulation2IO
+
+The most pixels, or cells, that the readers of images and height fields
+accept unless told otherwise: 2^26 (8192 x 8192). A file whose header claims
+more is refused before anything is allocated; the `max_pixels` (`max_cells`)
+argument of each reader raises the limit. A raster of that size takes about
+2 GB in `penrose_mesh` (its `--max-pixels` option sets the limit there).
+*/
+constexpr std::size_t default_max_pixels = std::size_t(1) << 26;
 
 /*!
 \ingroup PkgPenroseDelaunayTriangulation2IO
@@ -57,48 +71,24 @@ struct Height_field
 
 namespace internal {
 
-// The whole file, or an exception that tells why not (missing, unreadable, empty).
+// The whole file, or an exception that tells why not (missing, a directory,
+// unreadable, empty). Read in blocks, so that a pipe works too.
 inline std::string read_whole_file(const std::string& file)
 {
-  std::ifstream in(file, std::ios::binary | std::ios::ate);
+  std::error_code error;
+  if(std::filesystem::is_directory(file, error)) throw file_error(file, "is a directory");
+  std::ifstream in(file, std::ios::binary);
   if(!in) throw file_error(file, std::string("cannot open (") + std::strerror(errno) + ")");
-  const std::streamoff size = in.tellg();
-  if(size <= 0) throw file_error(file, "empty file");
-  std::string s(std::size_t(size), '\0');
-  in.seekg(0);
-  if(!in.read(&s[0], size)) throw file_error(file, "read error");
+  std::string s;
+  char block[1 << 16];
+  try {
+    while(in.read(block, sizeof block) || in.gcount() > 0) s.append(block, std::size_t(in.gcount()));
+  } catch(const std::bad_alloc&) {
+    throw file_error(file, "too large to hold in memory");
+  }
+  if(in.bad()) throw file_error(file, "read error");
+  if(s.empty()) throw file_error(file, "empty file");
   return s;
-}
-
-inline void check_dimensions(const std::string& file, double w, double h, std::size_t max_cells)
-{
-  if(!(w >= 1. && h >= 1. && w * h <= double(max_cells))) {
-    char buf[96];
-    std::snprintf(buf, sizeof buf, "absurd dimensions %.15g x %.15g", w, h);
-    throw file_error(file, buf);
-  }
-}
-
-// The bytes of an image file as stb_image sees them, its dimensions checked.
-struct Stb_image_bytes
-{
-  const stbi_uc* data;
-  int size;
-  int width = 0, height = 0, channels = 0;
-};
-
-inline Stb_image_bytes stb_image_bytes(const std::string& file, const std::string& bytes, std::size_t max_pixels)
-{
-  Stb_image_bytes b;
-  b.data = reinterpret_cast<const stbi_uc*>(bytes.data());
-  b.size = bytes.size() > std::size_t(std::numeric_limits<int>::max()) ? std::numeric_limits<int>::max()
-                                                                       : int(bytes.size());
-  if(!stbi_info_from_memory(b.data, b.size, &b.width, &b.height, &b.channels)) {
-    const char* reason = stbi_failure_reason();
-    throw file_error(file, std::string("cannot read as an image (") + (reason ? reason : "unknown format") + ")");
-  }
-  check_dimensions(file, b.width, b.height, max_pixels);
-  return b;
 }
 
 /*
@@ -112,11 +102,6 @@ struct Pnm
   double maxval = 0.;
   std::vector<std::uint16_t> samples;
 };
-
-inline bool is_pnm(const std::string& bytes)
-{
-  return bytes.size() >= 2 && bytes[0] == 'P' && (bytes[1] == '5' || bytes[1] == '6');
-}
 
 inline Pnm read_pnm(const std::string& file, const std::string& bytes, std::size_t max_pixels)
 {
@@ -153,23 +138,45 @@ inline Pnm read_pnm(const std::string& file, const std::string& bytes, std::size
 
 } // namespace internal
 
-/*!
-\ingroup PkgPenroseDelaunayTriangulation2IO
-Reads an ESRI ASCII grid (`.asc`): the header `ncols`, `nrows`,
-`xllcorner` or `xllcenter`, `yllcorner` or `yllcenter`, `cellsize` and the
-optional `NODATA_value`, then `nrows` rows of `ncols` heights from the north.
-Cells without data take the lowest height of the grid, so that a DEM clipped
-to a coastline or a border still makes a closed surface.
+namespace internal {
 
-\throws std::runtime_error naming the file and the problem: missing or empty
-file, a header field missing or invalid, absurd dimensions (more than
-`max_cells` cells), a value that is not a number, too few values, or no data.
-*/
-inline Height_field read_ESRI_ASCII_grid(const std::string& file, std::size_t max_cells = std::size_t(1) << 28)
+// The heights of an ESRI grid, from `at` on: one row of `ncols` numbers a
+// line, blank lines aside, `nrows` rows.
+inline void read_grid_rows(const std::string& file, const std::string& text, std::size_t at, Height_field& hf)
 {
-  const std::string text = internal::read_whole_file(file);
+  std::size_t line = 1 + std::size_t(std::count(text.begin(), text.begin() + std::ptrdiff_t(at), '\n'));
+  auto fail = [&](const std::string& why) { return file_error(file, "line " + std::to_string(line) + ": " + why); };
+  std::size_t row = 0;
+  for(; at < text.size(); ++line) {
+    const std::size_t end = (std::min)(text.find('\n', at), text.size());
+    const std::string l = text.substr(at, end - at);
+    at = end + 1;
+    std::size_t count = 0;
+    for(const char* p = l.c_str();;) {
+      while(std::isspace((unsigned char)*p)) ++p;
+      if(p == l.c_str() + l.size()) break;
+      char* next = nullptr;
+      const double v = std::strtod(p, &next);
+      if(next == p) throw fail("value " + std::to_string(count + 1) + " is not a number");
+      if(!std::isfinite(v)) throw fail("value " + std::to_string(count + 1) + " is not finite");
+      if(row == hf.height) throw fail("more rows than nrows (" + std::to_string(hf.height) + ")");
+      if(count == hf.width) throw fail("more values than ncols (" + std::to_string(hf.width) + ")");
+      hf.values[row * hf.width + count++] = v;
+      p = next;
+    }
+    if(count > 0 && count < hf.width)
+      throw fail(std::to_string(count) + " values where ncols is " + std::to_string(hf.width));
+    row += count > 0;
+  }
+  if(row < hf.height)
+    throw file_error(file, "truncated: " + std::to_string(row) + " of " + std::to_string(hf.height) + " rows");
+}
+
+// The grid of read_ESRI_ASCII_grid() from the text of `file`.
+inline Height_field parse_ESRI_ASCII_grid(const std::string& file, const std::string& text, std::size_t max_cells)
+{
   const char* p = text.c_str();
-  auto fail = [&](const std::string& why) { return internal::file_error(file, why); };
+  auto fail = [&](const std::string& why) { return file_error(file, why); };
   double ncols = -1., nrows = -1., xll = NAN, yll = NAN, cell = -1., nodata = NAN;
   bool x_centre = false, y_centre = false;
   // header: "keyword value" lines, until the first line that starts with a number
@@ -178,7 +185,7 @@ inline Height_field read_ESRI_ASCII_grid(const std::string& file, std::size_t ma
     if(!std::isalpha((unsigned char)*p)) break;
     const char* k = p;
     while(std::isalpha((unsigned char)*p) || *p == '_') ++p;
-    const std::string key = internal::lowercase(std::string(k, p));
+    const std::string key = lowercase(std::string(k, p));
     char* end = nullptr;
     const double v = std::strtod(p, &end);
     if(end == p) throw fail("header field '" + key + "' has no numeric value");
@@ -195,7 +202,7 @@ inline Height_field read_ESRI_ASCII_grid(const std::string& file, std::size_t ma
   if(std::isnan(xll) || std::isnan(yll)) throw fail("header lacks xllcorner / yllcorner");
   if(!(cell > 0. && std::isfinite(cell))) throw fail("cellsize must be positive");
   if(ncols != std::floor(ncols) || nrows != std::floor(nrows)) throw fail("ncols and nrows must be integers");
-  internal::check_dimensions(file, ncols, nrows, max_cells);
+  check_dimensions(file, ncols, nrows, max_cells);
 
   Height_field hf;
   hf.width = std::size_t(ncols);
@@ -204,53 +211,36 @@ inline Height_field read_ESRI_ASCII_grid(const std::string& file, std::size_t ma
   hf.y0 = y_centre ? yll - 0.5 * cell : yll;
   hf.x1 = hf.x0 + cell * ncols;
   hf.y1 = hf.y0 + cell * nrows;
+  if(!(std::isfinite(hf.x0) && std::isfinite(hf.y0) && std::isfinite(hf.x1) && std::isfinite(hf.y1)
+       && hf.x1 > hf.x0 && hf.y1 > hf.y0))
+    throw fail("the extent from xllcorner, yllcorner and cellsize is not finite or is empty");
   const std::size_t n = hf.width * hf.height;
   if(text.size() < 2 * n) throw fail("truncated: " + std::to_string(text.size()) + " bytes cannot hold "
                                      + std::to_string(n) + " values");
   hf.values.resize(n);
+  read_grid_rows(file, text, std::size_t(p - text.c_str()), hf);
   double lowest = std::numeric_limits<double>::infinity();
-  for(std::size_t k = 0; k < n; ++k) {
-    char* end = nullptr;
-    const double v = std::strtod(p, &end);
-    if(end == p) {
-      while(std::isspace((unsigned char)*p)) ++p;
-      throw fail(*p ? "value " + std::to_string(k + 1) + " is not a number"
-                    : "truncated: " + std::to_string(k) + " of " + std::to_string(n) + " values");
-    }
-    if(!std::isfinite(v)) throw fail("value " + std::to_string(k + 1) + " is not finite");
-    p = end;
-    hf.values[k] = v;
+  for(double v : hf.values)
     if(v != nodata) lowest = (std::min)(lowest, v);
-  }
   if(lowest == std::numeric_limits<double>::infinity()) throw fail("every cell is NODATA");
   for(double& v : hf.values)
     if(v == nodata) v = lowest;
   return hf;
 }
 
-/*!
-\ingroup PkgPenroseDelaunayTriangulation2IO
-Reads a grey PNG or PGM image (16 or 8 bits per sample) as heights: the raw
-sample values (0 to 65535, or 0 to 255), one pixel a unit square, the image
-over the rectangle [0, width] x [0, height].
-
-\throws std::runtime_error naming the file and the problem: missing, empty,
-not an image, colour, absurd dimensions (more than `max_cells` pixels),
-truncated or corrupt.
-*/
-inline Height_field read_height_image(const std::string& file, std::size_t max_cells = std::size_t(1) << 28)
+// The heights of read_height_image() from the bytes of `file`.
+inline Height_field decode_height_image(const std::string& file, const std::string& bytes, std::size_t max_cells)
 {
-  const std::string bytes = internal::read_whole_file(file);
-  auto fail = [&](const std::string& why) { return internal::file_error(file, why); };
+  auto fail = [&](const std::string& why) { return file_error(file, why); };
   Height_field hf;
-  if(internal::is_pnm(bytes)) {
-    internal::Pnm p = internal::read_pnm(file, bytes, max_cells);
+  if(image_format(bytes) == Image_format::pnm) {
+    Pnm p = read_pnm(file, bytes, max_cells);
     if(p.channels != 1) throw fail("is a colour PPM; a height field is a grey image");
     hf.width = p.width;
     hf.height = p.height;
     hf.values.assign(p.samples.begin(), p.samples.end());
   } else {
-    internal::Stb_image_bytes b = internal::stb_image_bytes(file, bytes, max_cells);
+    Stb_image_bytes b = stb_image_bytes(file, bytes, max_cells);
     const stbi_uc* data = b.data;
     const int size = b.size;
     int w = b.width, h = b.height, c = b.channels;
@@ -270,10 +260,47 @@ inline Height_field read_height_image(const std::string& file, std::size_t max_c
   return hf;
 }
 
+} // namespace internal
+
+/*!
+\ingroup PkgPenroseDelaunayTriangulation2IO
+Reads an ESRI ASCII grid (`.asc`): the header `ncols`, `nrows`,
+`xllcorner` or `xllcenter`, `yllcorner` or `yllcenter`, `cellsize` and the
+optional `NODATA_value`, then `nrows` lines of `ncols` heights from the north
+(blank lines aside). Cells without data take the lowest height of the grid,
+so that a DEM clipped to a coastline or a border still makes a closed surface.
+
+\throws std::runtime_error naming the file and the problem: missing or empty
+file, a directory, a header field missing or invalid, an extent that is not
+finite, absurd dimensions (more than `max_cells` cells), a value that is not
+a finite number, a row of more or fewer than `ncols` values or more rows
+than `nrows` (naming the line), too few rows, or no data.
+*/
+inline Height_field read_ESRI_ASCII_grid(const std::string& file, std::size_t max_cells = default_max_pixels)
+{
+  return internal::parse_ESRI_ASCII_grid(file, internal::read_whole_file(file), max_cells);
+}
+
+/*!
+\ingroup PkgPenroseDelaunayTriangulation2IO
+Reads a grey PNG or PGM image (16 or 8 bits per sample) as heights: the raw
+sample values (0 to 65535, or 0 to 255), one pixel a unit square, the image
+over the rectangle [0, width] x [0, height]. (A grey JPEG is read too.)
+
+\throws std::runtime_error naming the file and the problem: missing, empty,
+a directory, not a PNG, JPEG or PGM image, colour, absurd dimensions (more
+than `max_cells` pixels, or more than the file's size can hold), truncated
+or corrupt.
+*/
+inline Height_field read_height_image(const std::string& file, std::size_t max_cells = default_max_pixels)
+{
+  return internal::decode_height_image(file, internal::read_whole_file(file), max_cells);
+}
+
 /// \ingroup PkgPenroseDelaunayTriangulation2IO
 /// Reads a height field, by the file's extension: `.asc` with
 /// `read_ESRI_ASCII_grid()`, anything else with `read_height_image()`.
-inline Height_field read_height_field(const std::string& file, std::size_t max_cells = std::size_t(1) << 28)
+inline Height_field read_height_field(const std::string& file, std::size_t max_cells = default_max_pixels)
 {
   return internal::lowercase_extension(file) == "asc" ? read_ESRI_ASCII_grid(file, max_cells)
                                                       : read_height_image(file, max_cells);

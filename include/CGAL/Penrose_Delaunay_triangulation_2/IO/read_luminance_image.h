@@ -32,7 +32,7 @@ struct Luminance_image
 /// for 8- and 16-bit images, in linear radiance for .hdr files.
 /// \throws std::runtime_error naming the file and the problem.
 inline Luminance_image read_luminance_image(const std::string& file,
-                                            std::size_t max_pixels = std::size_t(1) << 28)
+                                            std::size_t max_pixels = default_max_pixels)
 {
   const Rgb_image rgb = read_rgb_image(file, max_pixels);
   Luminance_image img;

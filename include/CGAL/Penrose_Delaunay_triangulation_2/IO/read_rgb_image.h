@@ -1,13 +1,14 @@
 // Copyright (c) 2026 The Penrose_Delaunay_triangulation_2 authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Reads an image as RGB colours: PNG, JPG, PGM/PPM (8 and 16 bit) and
-// Radiance .hdr through stb_image (Debian's libstb-dev; link with -lstb).
+// Reads an image as RGB colours: PNG and JPG through stb_image (Debian's
+// libstb-dev; link with -lstb), PGM/PPM (8 and 16 bit) and Radiance .hdr.
 
 #ifndef CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_IO_READ_RGB_IMAGE_H
 #define CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_IO_READ_RGB_IMAGE_H
 
 #include <CGAL/Penrose_Delaunay_triangulation_2/IO/height_field_io.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/IO/internal/read_radiance_hdr.h>
 
 #include <stb/stb_image.h>
 
@@ -17,6 +18,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -38,21 +40,15 @@ struct Rgb_image
   const float* pixel(std::size_t i, std::size_t j) const { return &values[3 * (j * width + i)]; }
 };
 
-/*!
-\ingroup PkgPenroseDelaunayTriangulation2IO
-Reads `file` as colours: in [0, 1] for 8- and 16-bit images (grey images give
-three equal channels), in linear radiance for .hdr files.
+namespace internal {
 
-\throws std::runtime_error naming the file and the problem: missing, empty,
-not an image, absurd dimensions (more than `max_pixels`), truncated or corrupt.
-*/
-inline Rgb_image read_rgb_image(const std::string& file, std::size_t max_pixels = std::size_t(1) << 28)
+// The image of read_rgb_image() from the bytes of `file`.
+inline Rgb_image decode_rgb_image(const std::string& file, const std::string& bytes, std::size_t max_pixels)
 {
-  const std::string bytes = internal::read_whole_file(file);
-  auto fail = [&](const std::string& why) { return internal::file_error(file, why); };
   Rgb_image img;
-  if(internal::is_pnm(bytes)) {
-    const internal::Pnm p = internal::read_pnm(file, bytes, max_pixels);
+  const Image_format format = image_format(bytes);
+  if(format == Image_format::pnm) {
+    const Pnm p = read_pnm(file, bytes, max_pixels);
     img.width = p.width;
     img.height = p.height;
     img.values.resize(3 * p.width * p.height);
@@ -60,26 +56,49 @@ inline Rgb_image read_rgb_image(const std::string& file, std::size_t max_pixels 
       img.values[k] = float(p.samples[p.channels == 3 ? k : k / 3] / p.maxval);
     return img;
   }
-  internal::Stb_image_bytes b = internal::stb_image_bytes(file, bytes, max_pixels);
-  const stbi_uc* data = b.data;
-  const int size = b.size;
+  if(format == Image_format::radiance) {
+    Radiance_image r = read_radiance_hdr(file, bytes, max_pixels);
+    img.width = r.width;
+    img.height = r.height;
+    img.values = std::move(r.rgb);
+    img.high_dynamic_range = true;
+    return img;
+  }
+  Stb_image_bytes b = stb_image_bytes(file, bytes, max_pixels);
   int w = b.width, h = b.height, c = b.channels;
   img.width = std::size_t(w);
   img.height = std::size_t(h);
-  img.values.resize(3 * img.width * img.height);
   auto convert = [&](auto* pixels, float unit) {
-    if(!pixels) throw fail(std::string("truncated or corrupt image (") + stbi_failure_reason() + ")");
+    if(!pixels)
+      throw file_error(file, std::string("truncated or corrupt image (") + stbi_failure_reason() + ")");
     std::unique_ptr<void, void (*)(void*)> owner(pixels, stbi_image_free);
+    img.values.resize(3 * img.width * img.height);
     for(std::size_t k = 0; k < img.values.size(); ++k) img.values[k] = float(pixels[k]) * unit;
   };
-  if(stbi_is_hdr_from_memory(data, size)) {
-    img.high_dynamic_range = true;
-    convert(stbi_loadf_from_memory(data, size, &w, &h, &c, 3), 1.f);
-  } else if(stbi_is_16_bit_from_memory(data, size))
-    convert(stbi_load_16_from_memory(data, size, &w, &h, &c, 3), 1.f / 65535.f);
+  if(stbi_is_16_bit_from_memory(b.data, b.size))
+    convert(stbi_load_16_from_memory(b.data, b.size, &w, &h, &c, 3), 1.f / 65535.f);
   else
-    convert(stbi_load_from_memory(data, size, &w, &h, &c, 3), 1.f / 255.f);
+    convert(stbi_load_from_memory(b.data, b.size, &w, &h, &c, 3), 1.f / 255.f);
   return img;
+}
+
+} // namespace internal
+
+/*!
+\ingroup PkgPenroseDelaunayTriangulation2IO
+Reads `file` as colours: in [0, 1] for 8- and 16-bit images (grey images give
+three equal channels), in linear radiance for .hdr files. PNG and JPEG are
+decoded by stb_image, once their dimensions are checked; PGM/PPM and
+Radiance HDR by the package, every read checked against the bytes left.
+
+\throws std::runtime_error naming the file and the problem: missing, empty,
+a directory, not an image of these formats, absurd dimensions (more than
+`max_pixels`, see `default_max_pixels`, or more than the file's size can
+hold), truncated or corrupt.
+*/
+inline Rgb_image read_rgb_image(const std::string& file, std::size_t max_pixels = default_max_pixels)
+{
+  return internal::decode_rgb_image(file, internal::read_whole_file(file), max_pixels);
 }
 
 /// \ingroup PkgPenroseDelaunayTriangulation2IO

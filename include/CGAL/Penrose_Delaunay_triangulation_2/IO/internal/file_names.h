@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 
@@ -20,6 +21,16 @@ namespace internal {
 inline std::runtime_error file_error(const std::string& file, const std::string& why)
 {
   return std::runtime_error(file + ": " + why);
+}
+
+// The dimensions that a header claims, refused before anything is allocated.
+inline void check_dimensions(const std::string& file, double w, double h, std::size_t max_cells)
+{
+  if(!(w >= 1. && h >= 1. && w * h <= double(max_cells))) {
+    char buf[128];
+    std::snprintf(buf, sizeof buf, "absurd dimensions %.15g x %.15g (the limit is %zu pixels)", w, h, max_cells);
+    throw file_error(file, buf);
+  }
 }
 
 // extensions and the keywords of text formats are not case-sensitive
