@@ -21,6 +21,7 @@
 
 #include <stb/stb_image_write.h>
 
+#include "mesh_options.h"
 #include "mesh_raster.h"
 #include "progress_bar.h"
 #include "raster_maps.h"
@@ -51,141 +52,20 @@ typedef CGAL::Penrose_Delaunay_triangulation_2<Gt, Tds> Triangulation;
 typedef Triangulation::Vertex_handle Vertex_handle;
 using penrose_tools::Raster;
 
-const char* usage_text =
-  "usage: penrose_mesh (--density constant|ramp|radial|image:FILE | --terrain FILE)\n"
-  "                    [--points N | --scale S] [--region X0 Y0 X1 Y1] [--no-correction] [--boundary]\n"
-  "                    [--gamma G] [--log] [--invert] [--gradient] [--height-scale S] [--viewer X Y]\n"
-  "                    [--out-points FILE] [--out-mesh FILE] [--svg FILE] [--png FILE]\n"
-  "                    [--reconstruct FILE] [--stats-json FILE]\n"
-  "\n"
-  "density:\n"
-  "  --density constant|ramp|radial\n"
-  "                uniform; proportional to (x - X0) / (X1 - X0); or\n"
-  "                exp(-r^2 / (2 s^2)) around the centre, s = 0.2 width, plus 5% of the peak\n"
-  "  --density image:FILE\n"
-  "                the luminance of a PNG, JPG, PGM/PPM (8 or 16 bit) or Radiance .hdr image\n"
-  "  --terrain FILE\n"
-  "                a height field: a 16-bit grey PNG or PGM, or an ESRI ASCII grid (.asc);\n"
-  "                density from its curvature (largest absolute Hessian eigenvalue, smoothed,\n"
-  "                to the power 2/3); the mesh is 3D, with the heights\n"
-  "  --gamma G     raise the density to the power G (after the options below)\n"
-  "  --log         image: use log(1 + L / mean L) instead of L (for HDR images)\n"
-  "  --invert      image: dense where the image is dark\n"
-  "  --gradient    image: use the smoothed gradient magnitude (edges), plus a tenth of its mean\n"
-  "  --height-scale S   terrain: multiply the heights by S (default 1)\n"
-  "  --viewer X Y  terrain: divide the density by 1 + d / d0, d the distance to (X, Y),\n"
-  "                d0 a fiftieth of the diagonal (view-dependent mesh)\n"
-  "\n"
-  "sampling:\n"
-  "  --points N    scale the density so that about N points come out (default 10000)\n"
-  "  --scale S     multiply the density (in points per unit area) by S instead\n"
-  "  --region      the rectangle sampled (default 0 0 1 1; an image or a height field is\n"
-  "                stretched over it, and by default covers 0 0 WIDTH HEIGHT, or the\n"
-  "                extent in the header of an .asc grid)\n"
-  "  --no-correction  keep the raw tile vertices (no correction vectors)\n"
-  "  --boundary    add points along the border of the region at the local density, so\n"
-  "                that the mesh covers the whole rectangle\n"
-  "\n"
-  "output:\n"
-  "  --out-points  one \"x y\" line per point (\"x y z\" for a terrain), full precision\n"
-  "  --out-mesh    the triangulation as .off, .ply or .obj (by extension), the vertices\n"
-  "                in the order of --out-points, triangles counter-clockwise\n"
-  "  --svg         draw the triangulation and the points (over the image, if any)\n"
-  "  --png         draw the triangulation over the image or the height field\n"
-  "  --reconstruct image: render the mesh back to a PNG, colours interpolated linearly\n"
-  "                over each triangle from the image at its vertices\n"
-  "  --stats-json  write {\"points\": ..., \"sample_seconds\": ..., \"triangulate_seconds\": ...,\n"
-  "                \"vertices\": ..., \"faces\": ..., \"flips\": ..., \"fallbacks\": ..., ...}; for a\n"
-  "                terrain also the vertical \"max_error\" and \"rms_error\" of the mesh and\n"
-  "                \"grid_max_error\", \"grid_rms_error\" of the regular grid of as many\n"
-  "                vertices; for an image \"psnr\" and \"grid_psnr\" likewise. The tile tree is\n"
-  "                sampled while the triangulation is derived from it: sample_seconds is the\n"
-  "                sampler's preparation, triangulate_seconds the rest\n"
-  "\n"
-  "A progress bar is drawn on stderr, when it is a terminal, for runs over a second.\n"
-  "\n"
-  "examples:\n"
-  "  penrose_mesh --density ramp --points 20000 --svg ramp.svg --out-mesh ramp.off\n"
-  "  penrose_mesh --density image:photo.jpg --gradient --points 20000 --boundary \\\n"
-  "               --reconstruct photo_mesh.png --png photo_edges.png --stats-json photo.json\n"
-  "  penrose_mesh --density image:memorial.hdr --log --points 50000 --svg memorial.svg\n"
-  "  penrose_mesh --terrain dem.asc --points 100000 --boundary --viewer 0 0 \\\n"
-  "               --out-mesh dem.ply --png dem.png --stats-json dem.json\n";
+using penrose_tools::Options;
+using penrose_tools::usage_error;
 
-struct Options
+// Whether every value is finite: an option that overflows them is refused by name.
+bool all_finite(const std::vector<double>& v)
 {
-  std::string density = "constant", terrain;
-  double points = 10000.;
-  double scale = 0.;
-  double region[4] = {0, 0, 1, 1};
-  bool region_given = false, correction = true, boundary = false;
-  double gamma = 1., height_scale = 1.;
-  bool log = false, invert = false, gradient = false;
-  bool viewer_given = false;
-  double viewer[2] = {0, 0};
-  std::string out_points, out_mesh, svg, png, reconstruct, stats_json;
-};
-
-[[noreturn]] void usage_error(const std::string& why)
-{
-  std::cerr << "penrose_mesh: " << why << "\n\n" << usage_text;
-  std::exit(2);
+  return std::all_of(v.begin(), v.end(), [](double x) { return std::isfinite(x); });
 }
 
-double number(const char* s, const std::string& option)
+std::string text(double v)
 {
-  char* end = nullptr;
-  const double v = std::strtod(s, &end);
-  if(end == s || *end != '\0' || !std::isfinite(v)) usage_error(option + " expects a number, not '" + s + "'");
-  return v;
-}
-
-Options parse(int argc, char** argv)
-{
-  Options o;
-  bool have_points = false, have_scale = false, have_density = false;
-  for(int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    auto value = [&](int k = 1) -> const char* {
-      if(i + k >= argc) usage_error(a + " needs a value");
-      return argv[i + k];
-    };
-    auto text = [&](std::string& s) { s = value(); ++i; };
-    if(a == "--help" || a == "-h") { std::cout << usage_text; std::exit(0); }
-    else if(a == "--density") { text(o.density); have_density = true; }
-    else if(a == "--terrain") text(o.terrain);
-    else if(a == "--points") { o.points = number(value(), a); have_points = true; ++i; }
-    else if(a == "--scale") { o.scale = number(value(), a); have_scale = true; ++i; }
-    else if(a == "--region") { for(int k = 0; k < 4; ++k) o.region[k] = number(value(k + 1), a); i += 4; o.region_given = true; }
-    else if(a == "--no-correction") o.correction = false;
-    else if(a == "--boundary") o.boundary = true;
-    else if(a == "--gamma") { o.gamma = number(value(), a); ++i; }
-    else if(a == "--log") o.log = true;
-    else if(a == "--invert") o.invert = true;
-    else if(a == "--gradient") o.gradient = true;
-    else if(a == "--height-scale") { o.height_scale = number(value(), a); ++i; }
-    else if(a == "--viewer") { for(int k = 0; k < 2; ++k) o.viewer[k] = number(value(k + 1), a); i += 2; o.viewer_given = true; }
-    else if(a == "--out-points") text(o.out_points);
-    else if(a == "--out-mesh") text(o.out_mesh);
-    else if(a == "--svg") text(o.svg);
-    else if(a == "--png") text(o.png);
-    else if(a == "--reconstruct") text(o.reconstruct);
-    else if(a == "--stats-json") text(o.stats_json);
-    else usage_error("unknown option '" + a + "'");
-  }
-  const bool image = o.density.rfind("image:", 0) == 0, terrain = !o.terrain.empty();
-  if(have_points && have_scale) usage_error("give --points or --scale, not both");
-  if(have_scale) o.points = 0.;
-  if(have_points && !(o.points >= 1.)) usage_error("--points must be at least 1");
-  // beyond, the count would not convert to a std::size_t
-  if(have_points && !(o.points <= 1e18)) usage_error("--points must be at most 1e18");
-  if(have_scale && !(o.scale > 0.)) usage_error("--scale must be positive");
-  if(have_density && terrain) usage_error("give --density or --terrain, not both");
-  if(!(o.gamma > 0.)) usage_error("--gamma must be positive");
-  if((o.log || o.invert || o.gradient) && !image) usage_error("--log, --invert and --gradient apply to images");
-  if(!o.reconstruct.empty() && !image) usage_error("--reconstruct needs an image (--density image:FILE)");
-  if((o.viewer_given || o.height_scale != 1.) && !terrain) usage_error("--viewer and --height-scale apply to --terrain");
-  return o;
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
 }
 
 double seconds_since(std::chrono::steady_clock::time_point t0)
@@ -209,7 +89,7 @@ Input read_image(const Options& o)
 {
   Input in;
   in.file = o.density.substr(6);
-  CGAL::IO::Rgb_image img = CGAL::IO::read_rgb_image(in.file);
+  CGAL::IO::Rgb_image img = CGAL::IO::read_rgb_image(in.file, std::size_t(o.max_pixels));
   in.density.width = in.colours.width = img.width;
   in.density.height = in.colours.height = img.height;
   in.colours.channels = 3;
@@ -222,6 +102,7 @@ Input read_image(const Options& o)
   if(o.gradient) penrose_tools::gradient_magnitude(d, img.width, img.height);
   if(o.invert) penrose_tools::invert(d);
   penrose_tools::apply_gamma(d, o.gamma);
+  if(!all_finite(d)) usage_error("--gamma " + text(o.gamma) + ": the density of " + in.file + " raised to it overflows");
   return in;
 }
 
@@ -231,12 +112,14 @@ Input read_terrain(const Options& o)
 {
   Input in;
   in.file = o.terrain;
-  CGAL::IO::Height_field hf = CGAL::IO::read_height_field(in.file);
+  CGAL::IO::Height_field hf = CGAL::IO::read_height_field(in.file, std::size_t(o.max_pixels));
   Raster<double>& h = in.heights;
   h.width = hf.width;
   h.height = hf.height;
   h.values = std::move(hf.values);
   for(double& v : h.values) v *= o.height_scale;
+  const std::string scaled = "--height-scale " + text(o.height_scale) + ": ";
+  if(!all_finite(h.values)) usage_error(scaled + "the heights of " + in.file + " times it overflow");
   h.x0 = hf.x0; h.y0 = hf.y0; h.x1 = hf.x1; h.y1 = hf.y1;
   const double spacing = o.points > 0. ? std::sqrt(double(h.width * h.height) / o.points) : 4.;
   const std::size_t block = std::size_t(std::min(16., std::max(1., std::floor(0.5 * spacing))));
@@ -245,7 +128,13 @@ Input read_terrain(const Options& o)
   in.density.values = penrose_tools::curvature_density(h.values, in.density.width, in.density.height,
                                                        (h.x1 - h.x0) / double(h.width),
                                                        (h.y1 - h.y0) / double(h.height), block);
+  if(!all_finite(in.density.values)) {
+    if(o.height_scale != 1.) usage_error(scaled + "the curvature of the heights of " + in.file + " overflows");
+    throw std::runtime_error(in.file + ": the curvature of its heights overflows (cells too small for their heights)");
+  }
   penrose_tools::apply_gamma(in.density.values, o.gamma);
+  if(!all_finite(in.density.values))
+    usage_error("--gamma " + text(o.gamma) + ": the density of " + in.file + " raised to it overflows");
   return in;
 }
 
@@ -276,13 +165,15 @@ Density make_density(const Options& o, Input& in, const K::Iso_rectangle_2& regi
     d.upper_bound = [raster](const K::Iso_rectangle_2& b) { return raster->upper_bound(b); };
   } else if(o.density == "constant") d.value = [](const Point&) { return 1.; };
   else if(o.density == "ramp") d.value = [=](const Point& p) { return (p.x() - x0) / (x1 - x0); };
-  else if(o.density == "radial") {
+  else {  // radial, at most 1.05
     const double cx = 0.5 * (x0 + x1), cy = 0.5 * (y0 + y1), s = 0.2 * (x1 - x0);
     d.value = [=](const Point& p) {
       const double r2 = (p.x() - cx) * (p.x() - cx) + (p.y() - cy) * (p.y() - cy);
       return std::exp(-r2 / (2 * s * s)) + 0.05;
     };
-  } else usage_error("unknown density '" + o.density + "'");
+    if(!std::isfinite(std::pow(1.05, o.gamma)))
+      usage_error("--gamma " + text(o.gamma) + ": the radial density raised to it overflows");
+  }
   if(in.density.values.empty() && o.gamma != 1.)  // a raster has it already
     d.value = [value = d.value, gamma = o.gamma](const Point& p) { return std::pow(value(p), gamma); };
   return d;
@@ -424,6 +315,14 @@ Quality measure(const Mesh& m, const Raster<T>& image, bool render)
   return q;
 }
 
+// Closes `f`, opened to write `file`: a failed write or close (a full disk)
+// is an error naming the file.
+void close_written(FILE* f, const std::string& file)
+{
+  const bool failed = std::ferror(f) != 0;
+  if(std::fclose(f) != 0 || failed) throw std::runtime_error(file + ": write failed");
+}
+
 void write_points(const std::string& file, const Mesh& m, bool with_heights)
 {
   FILE* f = std::fopen(file.c_str(), "w");
@@ -431,7 +330,7 @@ void write_points(const std::string& file, const Mesh& m, bool with_heights)
   for(std::size_t k = 0; k < m.points.size(); ++k)
     if(with_heights) std::fprintf(f, "%.17g %.17g %.17g\n", m.points[k].x(), m.points[k].y(), m.vertex[k]->point().z());
     else std::fprintf(f, "%.17g %.17g\n", m.points[k].x(), m.points[k].y());
-  if(std::fclose(f) != 0) throw std::runtime_error(file + ": write failed");
+  close_written(f, file);
 }
 
 void write_svg(const Options& o, const Input& in, const Mesh& m)
@@ -449,26 +348,31 @@ void write_svg(const Options& o, const Input& in, const Mesh& m)
   svg.begin_group("fill=\"black\"");
   for(const Point& q : m.points) svg.dot(q.x(), q.y(), r);
   svg.end_group();
-  if(!svg.good()) throw std::runtime_error(o.svg + ": write failed");
+  svg.close();
 }
 
+// Encoded in memory and written by write_bytes(), which checks the write and
+// the close: stbi_write_png() does not.
 void write_png(const std::string& file, int width, int height, int channels, const unsigned char* data)
 {
-  if(!stbi_write_png(file.c_str(), width, height, channels, data, width * channels))
-    throw std::runtime_error(file + ": cannot write the PNG");
+  std::string png;
+  auto append = [](void* to, void* bytes, int n) { static_cast<std::string*>(to)->append(static_cast<char*>(bytes), std::size_t(n)); };
+  if(!stbi_write_png_to_func(append, &png, width, height, channels, data, width * channels))
+    throw std::runtime_error(file + ": cannot encode the PNG");
+  CGAL::IO::internal::write_bytes(file, png);
 }
 
 unsigned char byte(double v) { return (unsigned char)std::lround(255. * std::min(std::max(v, 0.), 1.)); }
 
-// The mesh's edges, 1024 pixels across, over the image, or over the height
+// The mesh's edges, 1024 pixels on the region's longer side, over the image, or over the height
 // field shaded (lit from the north-west, its relief exaggerated to a fifth of
 // the region's width), lightened so that the edges stand out.
 void draw_png(const Options& o, const Input& in, const Mesh& m)
 {
   const double w = o.region[2] - o.region[0], h = o.region[3] - o.region[1];
   penrose_tools::Picture pic;
-  pic.width = 1024;
-  pic.height = std::max(1, int(std::lround(1024. * h / w)));
+  pic.width = w >= h ? 1024 : std::max(1, int(std::lround(1024. * w / h)));
+  pic.height = w >= h ? std::max(1, int(std::lround(1024. * h / w))) : 1024;
   pic.rgb.assign(3 * std::size_t(pic.width) * std::size_t(pic.height), 255);
   Raster<double> frame;
   frame.width = std::size_t(pic.width);
@@ -480,7 +384,7 @@ void draw_png(const Options& o, const Input& in, const Mesh& m)
     const auto [lo, hi] = std::minmax_element(z.values.begin(), z.values.end());
     relief = *hi > *lo ? 0.2 * w / (*hi - *lo) : 0.;
   }
-  const double d = w / 1024., lx = -0.5, ly = 0.5, lz = std::sqrt(0.5);  // light from the north-west, 45 degrees up
+  const double d = w / pic.width, lx = -0.5, ly = 0.5, lz = std::sqrt(0.5);  // light from the north-west, 45 degrees up
   for(int j = 0; j < pic.height; ++j)
     for(int i = 0; i < pic.width; ++i) {
       const double x = frame.x(i + 0.5), y = frame.y(j + 0.5);
@@ -514,30 +418,88 @@ struct Timings
   double read = 0., sample = 0., triangulate = 0., measure = 0., write = 0., total = 0.;
 };
 
+// A JSON number: null where the value does not exist (the PSNR of a mesh
+// without faces is infinite).
+std::string json_number(double v, int digits = 6)
+{
+  if(!std::isfinite(v)) return "null";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.*g", digits, v);
+  return buf;
+}
+
+std::string json_string(const std::string& s)
+{
+  std::string j = "\"";
+  for(unsigned char c : s) {
+    char buf[8];
+    if(c == '"' || c == '\\') { j += '\\'; j += char(c); }
+    else if(c < 0x20) { std::snprintf(buf, sizeof buf, "\\u%04x", c); j += buf; }
+    else j += char(c);
+  }
+  return j + '"';
+}
+
 void write_stats(const Options& o, const Input& in, const Sampler& sampler, const Mesh& m, std::size_t sampled,
                  std::size_t boundary, const Quality* q, const Timings& t)
 {
-  FILE* f = std::fopen(o.stats_json.c_str(), "w");
-  if(!f) throw std::runtime_error(o.stats_json + ": cannot open for writing");
-  std::fprintf(f, "{\"points\": %zu, \"expected_points\": %.6g, \"boundary_points\": %zu, "
-                  "\"vertices\": %zu, \"faces\": %zu, \"flips\": %zu, \"fallbacks\": %zu,\n"
-                  " \"read_seconds\": %.6g, \"sample_seconds\": %.6g, \"triangulate_seconds\": %.6g, "
-                  "\"measure_seconds\": %.6g, \"write_seconds\": %.6g, \"total_seconds\": %.6g,\n"
-                  " \"density\": \"%s\", \"region\": [%.17g, %.17g, %.17g, %.17g], \"correction\": %s",
-               sampled, sampler.expected_number_of_points(), boundary, m.t.number_of_vertices(),
-               m.t.number_of_faces(), m.t.number_of_flips(), m.t.number_of_fallbacks(),
-               t.read, t.sample, t.triangulate, t.measure, t.write, t.total,
-               in.file.empty() ? o.density.c_str() : in.file.c_str(),
-               o.region[0], o.region[1], o.region[2], o.region[3], o.correction ? "true" : "false");
-  if(q && !in.heights.values.empty())
-    std::fprintf(f, ",\n \"max_error\": %.6g, \"rms_error\": %.6g, \"grid_max_error\": %.6g, \"grid_rms_error\": %.6g, "
-                    "\"grid_vertices\": %zu, \"coverage\": %.6g",
-                 q->max_error, q->rms_error, q->grid_max_error, q->grid_rms_error, q->grid_vertices, q->coverage);
-  if(q && !in.colours.values.empty())
-    std::fprintf(f, ",\n \"psnr\": %.6g, \"grid_psnr\": %.6g, \"grid_vertices\": %zu, \"coverage\": %.6g",
-                 psnr(q->rms_error), psnr(q->grid_rms_error), q->grid_vertices, q->coverage);
-  std::fprintf(f, "}\n");
-  if(std::fclose(f) != 0) throw std::runtime_error(o.stats_json + ": write failed");
+  std::string j = "{", separator;
+  auto field = [&](const char* name, const std::string& value) {
+    j += separator + "\"" + name + "\": " + value;
+    separator = ", ";
+  };
+  auto count = [](std::size_t n) { return std::to_string(n); };
+  field("points", count(sampled));
+  field("expected_points", json_number(sampler.expected_number_of_points()));
+  field("boundary_points", count(boundary));
+  field("vertices", count(m.t.number_of_vertices()));
+  field("faces", count(m.t.number_of_faces()));
+  field("flips", count(m.t.number_of_flips()));
+  field("fallbacks", count(m.t.number_of_fallbacks()));
+  separator = ",\n ";
+  field("read_seconds", json_number(t.read));
+  field("sample_seconds", json_number(t.sample));
+  field("triangulate_seconds", json_number(t.triangulate));
+  field("measure_seconds", json_number(t.measure));
+  field("write_seconds", json_number(t.write));
+  field("total_seconds", json_number(t.total));
+  separator = ",\n ";
+  field("density", json_string(in.file.empty() ? o.density : in.file));
+  field("region", "[" + json_number(o.region[0], 17) + ", " + json_number(o.region[1], 17) + ", "
+                  + json_number(o.region[2], 17) + ", " + json_number(o.region[3], 17) + "]");
+  field("correction", o.correction ? "true" : "false");
+  if(q) {
+    separator = ",\n ";
+    if(!in.heights.values.empty()) {
+      field("max_error", json_number(q->max_error));
+      field("rms_error", json_number(q->rms_error));
+      field("grid_max_error", json_number(q->grid_max_error));
+      field("grid_rms_error", json_number(q->grid_rms_error));
+    } else {
+      field("psnr", json_number(psnr(q->rms_error)));
+      field("grid_psnr", json_number(psnr(q->grid_rms_error)));
+    }
+    field("grid_vertices", count(q->grid_vertices));
+    field("coverage", json_number(q->coverage));
+  }
+  CGAL::IO::internal::write_bytes(o.stats_json, j + "}\n");
+}
+
+// Runs `step`, its errors prefixed with the density and the options that
+// set it: the sampler's messages name neither.
+template <class Step>
+auto in_context(const Options& o, const Step& step)
+{
+  try {
+    return step();
+  } catch(const std::bad_alloc&) {
+    throw;
+  } catch(const std::exception& e) {
+    std::string s = o.terrain.empty() ? "--density " + o.density : "--terrain " + o.terrain;
+    s += o.points > 0. ? " --points " + text(o.points) : " --scale " + text(o.scale);
+    if(o.gamma != 1.) s += " --gamma " + text(o.gamma);
+    throw std::runtime_error(s + ": " + e.what());
+  }
 }
 
 void run(Options o)
@@ -555,8 +517,6 @@ void run(Options o)
     o.region[2] = double(in.colours.width);
     o.region[3] = double(in.colours.height);
   }
-  if(!(o.region[2] > o.region[0] && o.region[3] > o.region[1]))
-    throw std::invalid_argument("the region is empty or degenerate");
   place(in, o);
   const K::Iso_rectangle_2 region(o.region[0], o.region[1], o.region[2], o.region[3]);
   const Density d = make_density(o, in, region);
@@ -564,7 +524,7 @@ void run(Options o)
 
   bar.stage("sampling", 0.1, 0.2);
   auto t0 = std::chrono::steady_clock::now();
-  const std::unique_ptr<Sampler> sampler = make_sampler(o, region, d);
+  const std::unique_ptr<Sampler> sampler = in_context(o, [&] { return make_sampler(o, region, d); });
   time.sample = seconds_since(t0);
 
   // the tile tree is sampled while the triangulation is derived from it
@@ -573,7 +533,7 @@ void run(Options o)
   const Raster<double>& heights = in.heights;
   auto lift = [&heights](double x, double y) { return K::Point_3(x, y, heights.values.empty() ? 0. : heights(x, y)); };
   Mesh m;
-  triangulate(m, *sampler, lift, bar);
+  in_context(o, [&] { triangulate(m, *sampler, lift, bar); });
   const std::size_t sampled = m.points.size();
   const std::size_t boundary = o.boundary ? add_boundary(m, o, d, sampler->density_scale(), lift) : 0;
   time.triangulate = seconds_since(t0);
@@ -612,11 +572,19 @@ void run(Options o)
 
 } // namespace
 
+// A bad option: status 2; a file that cannot be read or written: status 1.
 int main(int argc, char** argv)
 {
-  const Options o = parse(argc, argv);
   try {
-    run(o);
+    const Options o = penrose_tools::parse(argc, argv);
+    if(o.help) std::cout << penrose_tools::usage_text;
+    else run(o);
+  } catch(const penrose_tools::Usage_error& e) {
+    std::cerr << "penrose_mesh: " << e.what() << " (penrose_mesh --help lists the options)\n";
+    return 2;
+  } catch(const std::bad_alloc&) {
+    std::cerr << "penrose_mesh: out of memory\n";
+    return 1;
   } catch(const std::exception& e) {
     std::cerr << "penrose_mesh: " << e.what() << "\n";
     return 1;

@@ -2,11 +2,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // A minimal SVG canvas for the command-line tools: a region of the plane
-// mapped onto a picture, y up, with an optional background image.
+// mapped onto a picture `longer_side_px` wide or high, y up, with an optional
+// background image. close() writes the end and checks every write.
 
 #ifndef PENROSE_TOOLS_SVG_WRITER_H
 #define PENROSE_TOOLS_SVG_WRITER_H
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <stdexcept>
@@ -17,20 +19,26 @@ namespace penrose_tools {
 class Svg_writer
 {
 public:
-  Svg_writer(const std::string& file, double xmin, double ymin, double xmax, double ymax, double width_px = 1024.)
-    : out_(file), xmin_(xmin), ymax_(ymax), k_(width_px / (xmax - xmin)),
-      w_(width_px), h_((ymax - ymin) * k_)
+  Svg_writer(const std::string& file, double xmin, double ymin, double xmax, double ymax,
+             double longer_side_px = 1024.)
+    : out_(file), file_(file), xmin_(xmin), ymax_(ymax), k_(longer_side_px / std::max(xmax - xmin, ymax - ymin)),
+      w_((xmax - xmin) * k_), h_((ymax - ymin) * k_)
   {
     if(!out_) throw std::runtime_error(file + ": cannot open for writing");
     out_ << "<svg xmlns=\"http://www.w3.org/2000/svg\" xmlns:xlink=\"http://www.w3.org/1999/xlink\" width=\""
          << w_ << "\" height=\"" << h_ << "\" viewBox=\"0 0 " << w_ << ' ' << h_ << "\">\n"
          << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
   }
-  ~Svg_writer() { out_ << "</svg>\n"; }
+  void close()
+  {
+    out_ << "</svg>\n";
+    out_.close();
+    if(!out_) throw std::runtime_error(file_ + ": write failed");
+  }
 
   void background_image(const std::string& href)
   {
-    out_ << "<image xlink:href=\"" << href << "\" x=\"0\" y=\"0\" width=\"" << w_ << "\" height=\"" << h_
+    out_ << "<image xlink:href=\"" << escaped(href) << "\" x=\"0\" y=\"0\" width=\"" << w_ << "\" height=\"" << h_
          << "\" preserveAspectRatio=\"none\" opacity=\"0.6\"/>\n";
   }
 
@@ -50,13 +58,25 @@ public:
     out_ << buf_;
   }
 
-  bool good() const { return bool(out_); }
-
 private:
+  // `s` as the value of an attribute
+  static std::string escaped(const std::string& s)
+  {
+    std::string e;
+    for(char c : s)
+      if(c == '&') e += "&amp;";
+      else if(c == '<') e += "&lt;";
+      else if(c == '>') e += "&gt;";
+      else if(c == '"') e += "&quot;";
+      else e += c;
+    return e;
+  }
+
   double u(double x) const { return (x - xmin_) * k_; }
   double v(double y) const { return (ymax_ - y) * k_; }
 
   std::ofstream out_;
+  std::string file_;
   double xmin_, ymax_, k_, w_, h_;
   char buf_[160];
 };

@@ -61,9 +61,17 @@ file(WRITE ${WORK}/truncated.pgm "P5\n64 64\n65535\nabc")
 file(WRITE ${WORK}/huge.pgm "P5\n2000000 2000000\n255\nabc")
 file(WRITE ${WORK}/short.asc "ncols 3\nnrows 3\nxllcorner 0\nyllcorner 0\ncellsize 1\n1 2 3\n")
 file(WRITE ${WORK}/huge.asc "ncols 900000000\nnrows 900000000\nxllcorner 0\nyllcorner 0\ncellsize 1\n1\n")
+set(grid "ncols 3\nnrows 2\nxllcorner 0\nyllcorner 0\n")
+file(WRITE ${WORK}/long.asc "${grid}cellsize 1\n1 2 3 4\n5 6\n")
+file(WRITE ${WORK}/rows.asc "${grid}cellsize 1\n1 2 3\n4 5 6\n7 8 9\n")
+file(WRITE ${WORK}/extent.asc "${grid}cellsize 1e308\n1 2 3\n4 5 6\n")
+file(WRITE ${WORK}/steep.asc "${grid}cellsize 1e-300\n1 2 3\n4 5 1e300\n")
+file(MAKE_DIRECTORY ${WORK}/directory.png)
 set(cases
   "missing.png|cannot open" "empty.png|empty file" "text.png|cannot read as an image"
-  "truncated.pgm|truncated" "huge.pgm|absurd dimensions" "short.asc|truncated" "huge.asc|absurd dimensions")
+  "truncated.pgm|truncated" "huge.pgm|absurd dimensions" "short.asc|truncated" "huge.asc|absurd dimensions"
+  "long.asc|line 6: more values than ncols" "rows.asc|line 8: more rows than nrows"
+  "extent.asc|extent" "steep.asc|curvature of its heights overflows" "directory.png|is a directory")
 foreach(c ${cases})
   string(REPLACE "|" ";" c "${c}")
   list(GET c 0 name)
@@ -89,6 +97,70 @@ run_mesh(--density ramp --points 100 --out-mesh ${WORK}/mesh.stl)
 if(NOT rc EQUAL 1 OR NOT err MATCHES "mesh.stl: unknown mesh format")
   message(FATAL_ERROR "--out-mesh mesh.stl: got ${rc}: ${err}")
 endif()
+
+# --max-pixels lowers the limit on the pixels that a header may claim.
+run_mesh(--terrain ${DATA}/terrain.png --max-pixels 1000)
+if(NOT rc EQUAL 1 OR NOT err MATCHES "terrain.png: absurd dimensions [^\n]*limit is 1000 pixels")
+  message(FATAL_ERROR "--max-pixels 1000: got ${rc}: ${err}")
+endif()
+
+# Outputs that cannot be written (a full disk), however small.
+foreach(output --out-points:xy --out-mesh:off --out-mesh:ply --out-mesh:obj --svg:svg --png:png --stats-json:json
+        --reconstruct:png)
+  string(REPLACE ":" ";" output "${output}")
+  list(GET output 0 option)
+  list(GET output 1 extension)
+  file(CREATE_LINK /dev/full ${WORK}/full.${extension} SYMBOLIC)
+  run_mesh(--density image:${DATA}/test_image.png --points 1 ${option} ${WORK}/full.${extension})
+  if(NOT rc EQUAL 1 OR NOT err MATCHES "^penrose_mesh: [^\n]*full.${extension}: [^\n]*(write|encode)[^\n]*\n$")
+    message(FATAL_ERROR "${option} /dev/full: expected status 1 and one line naming the file, got ${rc}: ${err}")
+  endif()
+endforeach()
+
+# A mesh without faces has no PSNR (null, not inf); a file name with a quote,
+# '<' and '&' stays a string in the JSON and an attribute in the SVG.
+file(COPY_FILE ${DATA}/test_image.png "${WORK}/q\"<&.png")
+run_mesh(--density "image:${WORK}/q\"<&.png" --points 1 --stats-json ${WORK}/names.json --svg ${WORK}/names.svg)
+file(READ ${WORK}/names.json json)
+string(JSON density ERROR_VARIABLE json_error GET "${json}" density)
+string(JSON psnr_type ERROR_VARIABLE json_error TYPE "${json}" psnr)
+if(NOT rc EQUAL 0 OR json_error OR NOT density STREQUAL "${WORK}/q\"<&.png" OR NOT psnr_type STREQUAL "NULL")
+  message(FATAL_ERROR "names.json (${rc}, ${json_error}): density '${density}', psnr '${psnr_type}': ${json}")
+endif()
+file(READ ${WORK}/names.svg svg)
+if(NOT svg MATCHES "xlink:href=\"[^\"]*q&quot;&lt;&amp;.png\"")
+  message(FATAL_ERROR "names.svg: the file name is not escaped")
+endif()
+
+# A drawing is 1024 pixels on the region's longer side (a 1 x 1024 PNG here,
+# where it was 1024 x 1,024,000).
+run_mesh(--density ramp --points 100 --region 0 0 0.001 1 --png ${WORK}/narrow.png)
+file(READ ${WORK}/narrow.png size HEX OFFSET 16 LIMIT 8)
+if(NOT rc EQUAL 0 OR NOT size STREQUAL "0000000100000400")
+  message(FATAL_ERROR "--region 0 0 0.001 1 --png: status ${rc}, IHDR size ${size}: ${err}")
+endif()
+
+# Options whose values overflow the density are named (status 2).
+set(option_cases
+  "--terrain|${DATA}/terrain.png|--height-scale|1e305|heights of [^\n]*terrain.png times it overflow"
+  "--terrain|${DATA}/terrain.png|--gamma|1e10|density of [^\n]*terrain.png raised to it overflows"
+  "--density|radial|--gamma|1e300|radial density raised to it overflows"
+  "--density|constant|--region|-1e308 0 1e308 1|must be positive and finite"
+  "--terrain|${DATA}/terrain.png|--max-pixels|0|must be in"
+  "--gamma|1|--density|image:|needs a file name")
+foreach(c ${option_cases})
+  string(REPLACE "|" ";" c "${c}")
+  list(GET c 0 input)
+  list(GET c 1 value)
+  list(GET c 2 option)
+  list(GET c 3 option_value)
+  list(GET c 4 why)
+  separate_arguments(option_value)
+  run_mesh(${input} ${value} --points 100 ${option} ${option_value})
+  if(NOT rc EQUAL 2 OR NOT err MATCHES "^penrose_mesh: [^\n]*${option}[^\n]*${why}[^\n]*\n$")
+    message(FATAL_ERROR "${input} ${value} ${option} ${option_value}: expected status 2 and one line, got ${rc}: ${err}")
+  endif()
+endforeach()
 
 # A count beyond std::size_t is refused, not wrapped around (1e30 gave 0 points).
 run_mesh(--density constant --points 1e30)

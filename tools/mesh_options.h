@@ -1,0 +1,179 @@
+// Copyright (c) 2026 The Penrose_Delaunay_triangulation_2 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The command line of penrose_mesh: its options, their checks and its usage
+// text. Apart from the tool, so that a fuzz target can parse command lines.
+
+#ifndef PENROSE_TOOLS_MESH_OPTIONS_H
+#define PENROSE_TOOLS_MESH_OPTIONS_H
+
+#include <CGAL/Penrose_Delaunay_triangulation_2/IO/height_field_io.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <stdexcept>
+#include <string>
+
+namespace penrose_tools {
+
+inline const char* const usage_text =
+  "usage: penrose_mesh (--density constant|ramp|radial|image:FILE | --terrain FILE)\n"
+  "                    [--points N | --scale S] [--region X0 Y0 X1 Y1] [--no-correction] [--boundary]\n"
+  "                    [--gamma G] [--log] [--invert] [--gradient] [--height-scale S] [--viewer X Y]\n"
+  "                    [--out-points FILE] [--out-mesh FILE] [--svg FILE] [--png FILE]\n"
+  "                    [--reconstruct FILE] [--stats-json FILE] [--max-pixels N]\n"
+  "\n"
+  "density:\n"
+  "  --density constant|ramp|radial\n"
+  "                uniform; proportional to (x - X0) / (X1 - X0); or\n"
+  "                exp(-r^2 / (2 s^2)) around the centre, s = 0.2 width, plus 5% of the peak\n"
+  "  --density image:FILE\n"
+  "                the luminance of a PNG, JPG, PGM/PPM (8 or 16 bit) or Radiance .hdr image\n"
+  "  --terrain FILE\n"
+  "                a height field: a 16-bit grey PNG or PGM, or an ESRI ASCII grid (.asc);\n"
+  "                density from its curvature (largest absolute Hessian eigenvalue, smoothed,\n"
+  "                to the power 2/3); the mesh is 3D, with the heights\n"
+  "  --gamma G     raise the density to the power G (after the options below)\n"
+  "  --log         image: use log(1 + L / mean L) instead of L (for HDR images)\n"
+  "  --invert      image: dense where the image is dark\n"
+  "  --gradient    image: use the smoothed gradient magnitude (edges), plus a tenth of its mean\n"
+  "  --height-scale S   terrain: multiply the heights by S (default 1)\n"
+  "  --viewer X Y  terrain: divide the density by 1 + d / d0, d the distance to (X, Y),\n"
+  "                d0 a fiftieth of the diagonal (view-dependent mesh)\n"
+  "  --max-pixels N  refuse an image or height field of more than N pixels (cells),\n"
+  "                from its header, before reading it (default 67108864 = 8192 x 8192,\n"
+  "                about 2 GB of memory here)\n"
+  "\n"
+  "sampling:\n"
+  "  --points N    scale the density so that about N points come out (default 10000)\n"
+  "  --scale S     multiply the density (in points per unit area) by S instead\n"
+  "  --region      the rectangle sampled (default 0 0 1 1; an image or a height field is\n"
+  "                stretched over it, and by default covers 0 0 WIDTH HEIGHT, or the\n"
+  "                extent in the header of an .asc grid)\n"
+  "  --no-correction  keep the raw tile vertices (no correction vectors)\n"
+  "  --boundary    add points along the border of the region at the local density, so\n"
+  "                that the mesh covers the whole rectangle\n"
+  "\n"
+  "output:\n"
+  "  --out-points  one \"x y\" line per point (\"x y z\" for a terrain), full precision\n"
+  "  --out-mesh    the triangulation as .off, .ply or .obj (by extension), the vertices\n"
+  "                in the order of --out-points, triangles counter-clockwise\n"
+  "  --svg         draw the triangulation and the points (over the image, if any)\n"
+  "  --png         draw the triangulation over the image or the height field\n"
+  "                (--svg and --png drawings are 1024 pixels on the region's longer side)\n"
+  "  --reconstruct image: render the mesh back to a PNG, colours interpolated linearly\n"
+  "                over each triangle from the image at its vertices\n"
+  "  --stats-json  write {\"points\": ..., \"sample_seconds\": ..., \"triangulate_seconds\": ...,\n"
+  "                \"vertices\": ..., \"faces\": ..., \"flips\": ..., \"fallbacks\": ..., ...}; for a\n"
+  "                terrain also the vertical \"max_error\" and \"rms_error\" of the mesh and\n"
+  "                \"grid_max_error\", \"grid_rms_error\" of the regular grid of as many\n"
+  "                vertices; for an image \"psnr\" and \"grid_psnr\" likewise. The tile tree is\n"
+  "                sampled while the triangulation is derived from it: sample_seconds is the\n"
+  "                sampler's preparation, triangulate_seconds the rest\n"
+  "\n"
+  "A progress bar is drawn on stderr, when it is a terminal, for runs over a second.\n"
+  "A file that cannot be read or written ends the run with status 1 and one line\n"
+  "naming it and the problem; a bad option, with status 2.\n"
+  "\n"
+  "examples:\n"
+  "  penrose_mesh --density ramp --points 20000 --svg ramp.svg --out-mesh ramp.off\n"
+  "  penrose_mesh --density image:photo.jpg --gradient --points 20000 --boundary \\\n"
+  "               --reconstruct photo_mesh.png --png photo_edges.png --stats-json photo.json\n"
+  "  penrose_mesh --density image:memorial.hdr --log --points 50000 --svg memorial.svg\n"
+  "  penrose_mesh --terrain dem.asc --points 100000 --boundary --viewer 0 0 \\\n"
+  "               --out-mesh dem.ply --png dem.png --stats-json dem.json\n";
+
+struct Options
+{
+  bool help = false;
+  std::string density = "constant", terrain;
+  double points = 10000.;
+  double scale = 0.;
+  double region[4] = {0, 0, 1, 1};
+  bool region_given = false, correction = true, boundary = false;
+  double gamma = 1., height_scale = 1.;
+  bool log = false, invert = false, gradient = false;
+  bool viewer_given = false;
+  double viewer[2] = {0, 0};
+  std::string out_points, out_mesh, svg, png, reconstruct, stats_json;
+  double max_pixels = double(CGAL::IO::default_max_pixels);
+};
+
+// A bad option or option value; penrose_mesh exits with status 2.
+struct Usage_error : std::runtime_error
+{
+  using std::runtime_error::runtime_error;
+};
+
+[[noreturn]] inline void usage_error(const std::string& why) { throw Usage_error(why); }
+
+inline double number(const char* s, const std::string& option)
+{
+  char* end = nullptr;
+  const double v = std::strtod(s, &end);
+  if(end == s || *end != '\0' || !std::isfinite(v)) usage_error(option + " expects a number, not '" + s + "'");
+  return v;
+}
+
+// The options of the command line `argv` (argv[0] the program); --help sets
+// `help` and ends the parse.
+inline Options parse(int argc, const char* const* argv)
+{
+  Options o;
+  bool have_points = false, have_scale = false, have_density = false;
+  for(int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    auto value = [&](int k = 1) -> const char* {
+      if(i + k >= argc) usage_error(a + " needs a value");
+      return argv[i + k];
+    };
+    auto text = [&](std::string& s) { s = value(); ++i; };
+    if(a == "--help" || a == "-h") { o.help = true; return o; }
+    else if(a == "--density") { text(o.density); have_density = true; }
+    else if(a == "--terrain") text(o.terrain);
+    else if(a == "--points") { o.points = number(value(), a); have_points = true; ++i; }
+    else if(a == "--scale") { o.scale = number(value(), a); have_scale = true; ++i; }
+    else if(a == "--region") { for(int k = 0; k < 4; ++k) o.region[k] = number(value(k + 1), a); i += 4; o.region_given = true; }
+    else if(a == "--no-correction") o.correction = false;
+    else if(a == "--boundary") o.boundary = true;
+    else if(a == "--gamma") { o.gamma = number(value(), a); ++i; }
+    else if(a == "--log") o.log = true;
+    else if(a == "--invert") o.invert = true;
+    else if(a == "--gradient") o.gradient = true;
+    else if(a == "--height-scale") { o.height_scale = number(value(), a); ++i; }
+    else if(a == "--viewer") { for(int k = 0; k < 2; ++k) o.viewer[k] = number(value(k + 1), a); i += 2; o.viewer_given = true; }
+    else if(a == "--out-points") text(o.out_points);
+    else if(a == "--out-mesh") text(o.out_mesh);
+    else if(a == "--svg") text(o.svg);
+    else if(a == "--png") text(o.png);
+    else if(a == "--reconstruct") text(o.reconstruct);
+    else if(a == "--stats-json") text(o.stats_json);
+    else if(a == "--max-pixels") { o.max_pixels = number(value(), a); ++i; }
+    else usage_error("unknown option '" + a + "'");
+  }
+  const bool image = o.density.rfind("image:", 0) == 0, terrain = !o.terrain.empty();
+  if(!image && o.density != "constant" && o.density != "ramp" && o.density != "radial")
+    usage_error("unknown density '" + o.density + "'");
+  if(o.density == "image:") usage_error("--density image: needs a file name");
+  if(have_points && have_scale) usage_error("give --points or --scale, not both");
+  if(have_scale) o.points = 0.;
+  if(have_points && !(o.points >= 1.)) usage_error("--points must be at least 1");
+  // beyond, the count would not convert to a std::size_t
+  if(have_points && !(o.points <= 1e18)) usage_error("--points must be at most 1e18");
+  if(have_scale && !(o.scale > 0.)) usage_error("--scale must be positive");
+  if(have_density && terrain) usage_error("give --density or --terrain, not both");
+  if(!(o.gamma > 0.)) usage_error("--gamma must be positive");
+  if(o.region_given && !(o.region[2] - o.region[0] > 0. && o.region[3] - o.region[1] > 0.
+                         && std::isfinite(o.region[2] - o.region[0]) && std::isfinite(o.region[3] - o.region[1])))
+    usage_error("--region: X1 - X0 and Y1 - Y0 must be positive and finite");
+  // the readers take a std::size_t
+  if(!(o.max_pixels >= 1. && o.max_pixels <= 1e18)) usage_error("--max-pixels must be in [1, 1e18]");
+  if((o.log || o.invert || o.gradient) && !image) usage_error("--log, --invert and --gradient apply to images");
+  if(!o.reconstruct.empty() && !image) usage_error("--reconstruct needs an image (--density image:FILE)");
+  if((o.viewer_given || o.height_scale != 1.) && !terrain) usage_error("--viewer and --height-scale apply to --terrain");
+  return o;
+}
+
+} // namespace penrose_tools
+
+#endif // PENROSE_TOOLS_MESH_OPTIONS_H
