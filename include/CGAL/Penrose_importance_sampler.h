@@ -174,9 +174,9 @@ public:
       };
 
     std::function<double(double, double, double, double)> bound_xy;
-    assign_bound(bound_xy, get_parameter(np, internal_np::density_upper_bound));
+    assign_bound(bound_xy, get_parameter(np, Penrose_np::density_upper_bound));
 
-    const bool correct = choose_parameter(get_parameter(np, internal_np::use_correction_vectors), true);
+    const bool correct = choose_parameter(get_parameter(np, Penrose_np::use_correction_vectors), true);
     const double factor = choose_parameter(get_parameter(np, internal_np::density_control_factor), 1.);
     const std::size_t maximum = choose_parameter(get_parameter(np, internal_np::maximum_number),
                                                  std::size_t(100000000));

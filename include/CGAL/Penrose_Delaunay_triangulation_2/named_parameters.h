@@ -13,34 +13,36 @@
 #include <CGAL/Named_function_parameters.h>
 
 namespace CGAL {
-namespace internal_np {
+// The tags live in a namespace of this package: a tag that a later CGAL adds
+// to `internal_np` cannot collide with them.
+namespace Penrose_np {
 enum use_correction_vectors_t { use_correction_vectors };
 enum density_upper_bound_t { density_upper_bound };
-} // namespace internal_np
+} // namespace Penrose_np
 
 namespace parameters {
 
 /// \ingroup PkgPenroseDelaunayTriangulation2NamedParameters
 /// Whether the sampler moves each sample by its correction vector (default `true`).
-inline Named_function_parameters<bool, internal_np::use_correction_vectors_t>
+inline Named_function_parameters<bool, Penrose_np::use_correction_vectors_t>
 use_correction_vectors(bool b)
 {
-  return Named_function_parameters<bool, internal_np::use_correction_vectors_t>(b);
+  return Named_function_parameters<bool, Penrose_np::use_correction_vectors_t>(b);
 }
 
 /// \ingroup PkgPenroseDelaunayTriangulation2NamedParameters
 /// A callable `double(const Iso_rectangle_2&)` that bounds the density from
 /// above over a box: with it, no feature of the density is missed.
 template <class Bound>
-Named_function_parameters<Bound, internal_np::density_upper_bound_t>
+Named_function_parameters<Bound, Penrose_np::density_upper_bound_t>
 density_upper_bound(const Bound& b)
 {
-  return Named_function_parameters<Bound, internal_np::density_upper_bound_t>(b);
+  return Named_function_parameters<Bound, Penrose_np::density_upper_bound_t>(b);
 }
 
 /// `use_correction_vectors(b)` followed by the parameters of `np`.
 template <class T, class Tag, class Base>
-Named_function_parameters<bool, internal_np::use_correction_vectors_t, Named_function_parameters<T, Tag, Base>>
+Named_function_parameters<bool, Penrose_np::use_correction_vectors_t, Named_function_parameters<T, Tag, Base>>
 use_correction_vectors(bool b, const Named_function_parameters<T, Tag, Base>& np)
 {
   return {b, np};
@@ -48,7 +50,7 @@ use_correction_vectors(bool b, const Named_function_parameters<T, Tag, Base>& np
 
 /// `density_upper_bound(b)` followed by the parameters of `np`.
 template <class Bound, class T, class Tag, class Base>
-Named_function_parameters<Bound, internal_np::density_upper_bound_t, Named_function_parameters<T, Tag, Base>>
+Named_function_parameters<Bound, Penrose_np::density_upper_bound_t, Named_function_parameters<T, Tag, Base>>
 density_upper_bound(const Bound& b, const Named_function_parameters<T, Tag, Base>& np)
 {
   return {b, np};
