@@ -11,6 +11,7 @@
 #include <cstddef>
 #include <functional>
 #include <limits>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -33,6 +34,9 @@ CGAL::Raster_density_2<K> d(width, height, values, region);
 CGAL::Penrose_importance_sampler<K> sampler(region, d,
   CGAL::parameters::density_upper_bound(d.upper_bound_function()));
 \endcode
+
+Copies share the raster and its pyramid, which never change after the
+construction. Only the constructor throws.
 */
 template <class Traits = Exact_predicates_inexact_constructions_kernel>
 class Raster_density_2
@@ -69,8 +73,8 @@ public:
       throw std::invalid_argument("Raster_density_2: the region is empty, degenerate or not finite");
     u_per_x_ = double(w_) / (x1_ - x0_);
     v_per_y_ = double(h_) / (y1_ - y0_);
-    levels_.push_back(std::move(values));
-    build_pyramid();
+    levels_ = build_pyramid(std::move(values));
+    raster_ = levels_->front().data();
   }
 
   /// The number of columns.
@@ -78,7 +82,7 @@ public:
   /// The number of rows.
   std::size_t height() const { return h_; }
   /// The value of pixel (i, j), column i, row j from the top.
-  double pixel(std::size_t i, std::size_t j) const { return levels_[0][j * w_ + i]; }
+  double pixel(std::size_t i, std::size_t j) const { return raster_[j * w_ + i]; }
 
   /// The bilinearly interpolated density at `p`.
   double operator()(const Point_2& p) const
@@ -106,9 +110,9 @@ public:
     const long j1 = clamp_index(floor_index(limited(pixel_v(by0) - 0.5, h_)) + 1, h_);
     // the finest level at which the range spans at most two cells each way
     std::size_t k = 0;
-    while(k + 1 < levels_.size() && ((i1 >> k) - (i0 >> k) > 1 || (j1 >> k) - (j0 >> k) > 1)) ++k;
+    while(k + 1 < levels_->size() && ((i1 >> k) - (i0 >> k) > 1 || (j1 >> k) - (j0 >> k) > 1)) ++k;
     // the two cells each way, the same one twice where the range spans one
-    const std::vector<double>& level = levels_[k];
+    const std::vector<double>& level = (*levels_)[k];
     const std::size_t wk = level_width(k);
     const std::size_t r0 = std::size_t(j0 >> k) * wk, r1 = std::size_t(j1 >> k) * wk;
     const std::size_t c0 = std::size_t(i0 >> k), c1 = std::size_t(i1 >> k);
@@ -117,10 +121,12 @@ public:
     return m * (1. + 1e-14);
   }
 
-  /// `upper_bound` as a callable, for the `density_upper_bound` named parameter.
+  /// `upper_bound` as a callable, for the `density_upper_bound` named
+  /// parameter. It holds a copy of this density, which shares the raster and
+  /// its pyramid: it stays valid after this density is destroyed.
   std::function<double(const Iso_rectangle_2&)> upper_bound_function() const
   {
-    return [this](const Iso_rectangle_2& b) { return upper_bound(b); };
+    return [copy = *this](const Iso_rectangle_2& b) { return copy.upper_bound(b); };
   }
 
   /// The exact integral of the interpolated density over the region, up to
@@ -128,7 +134,7 @@ public:
   double integral() const
   {
     double s = 0.;
-    for(double v : levels_[0]) s += v;
+    for(double v : levels_->front()) s += v;
     return s * (x1_ - x0_) * (y1_ - y0_) / double(w_ * h_);
   }
 
@@ -146,14 +152,16 @@ private:
     const long i = long(u);
     return double(i) > u ? i - 1 : i;
   }
-  double at(long i, long j) const { return levels_[0][std::size_t(clamp_index(j, h_)) * w_ + std::size_t(clamp_index(i, w_))]; }
+  double at(long i, long j) const { return raster_[std::size_t(clamp_index(j, h_)) * w_ + std::size_t(clamp_index(i, w_))]; }
   std::size_t level_width(std::size_t k) const { return ((w_ - 1) >> k) + 1; }
   std::size_t level_height(std::size_t k) const { return ((h_ - 1) >> k) + 1; }
 
-  void build_pyramid()
+  std::shared_ptr<const std::vector<std::vector<double>>> build_pyramid(std::vector<double> raster) const
   {
+    auto levels = std::make_shared<std::vector<std::vector<double>>>();
+    levels->push_back(std::move(raster));
     for(std::size_t k = 1; level_width(k - 1) > 1 || level_height(k - 1) > 1; ++k) {
-      const std::vector<double>& f = levels_[k - 1];
+      const std::vector<double>& f = (*levels)[k - 1];
       const std::size_t fw = level_width(k - 1), fh = level_height(k - 1);
       const std::size_t cw = level_width(k), ch = level_height(k);
       std::vector<double> c(cw * ch, 0.);
@@ -162,15 +170,18 @@ private:
           double& m = c[(j / 2) * cw + i / 2];
           m = (std::max)(m, f[j * fw + i]);
         }
-      levels_.push_back(std::move(c));
+      levels->push_back(std::move(c));
     }
+    return levels;
   }
 
   std::size_t w_, h_;
   Traits traits_;
   double x0_, y0_, x1_, y1_;
   double u_per_x_, v_per_y_;  // pixels per unit
-  std::vector<std::vector<double>> levels_;  // levels_[0]: the raster; then 2x2 maxima
+  // levels_[0]: the raster; then 2x2 maxima. Never changed, so copies share them.
+  std::shared_ptr<const std::vector<std::vector<double>>> levels_;
+  const double* raster_;  // levels_[0]'s values
 };
 
 } // namespace CGAL
