@@ -1,0 +1,406 @@
+// Copyright (c) 2026 The Penrose_Delaunay_triangulation_2 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The Python module penrose_delaunay: blue-noise samples of a density and
+// their Delaunay triangulation as numpy arrays.
+
+#include "density_table.h"
+#include "../tools/border_points.h"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2.h>
+#include <CGAL/Penrose_importance_sampler.h>
+#include <CGAL/Raster_density_2.h>
+#include <CGAL/Triangulation_face_base_with_info_2.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <boost/iterator/function_output_iterator.hpp>
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <exception>
+#include <functional>
+#include <memory>
+#include <new>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace py = pybind11;
+
+namespace penrose_python {
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef K::Point_2 Point;
+typedef K::Iso_rectangle_2 Rectangle;
+typedef CGAL::Penrose_importance_sampler<K> Sampler;
+typedef CGAL::Triangulation_vertex_base_with_info_2<std::int32_t, K> Vb;
+typedef CGAL::Triangulation_face_base_with_info_2<std::int32_t, K> Fb;
+typedef CGAL::Penrose_Delaunay_triangulation_2<K, CGAL::Triangulation_data_structure_2<Vb, Fb>> Triangulation;
+
+// What the Python functions were asked for, checked.
+struct Request
+{
+  std::array<double, 4> region;
+  std::optional<std::size_t> n;
+  double scale = 1.;
+  bool correction = true;
+};
+
+// The density in the sampler's terms: its value, and a bound over boxes where one is known.
+struct Density
+{
+  std::function<double(const Point&)> value;
+  std::function<double(const Rectangle&)> upper_bound;  // empty: the sampler probes
+};
+
+// A numpy array that owns `v`, without a copy.
+template <class T>
+py::array_t<T> to_numpy(std::vector<T>&& v, std::size_t rows, std::size_t columns)
+{
+  auto* owner = new std::vector<T>(std::move(v));
+  py::capsule free_when_done(owner, [](void* p) { delete static_cast<std::vector<T>*>(p); });
+  return py::array_t<T>({rows, columns}, owner->data(), free_when_done);
+}
+
+std::unique_ptr<Sampler> make_sampler(const Request& r, const Density& d)
+{
+  using namespace CGAL::parameters;
+  const Rectangle region(r.region[0], r.region[1], r.region[2], r.region[3]);
+  const auto np = use_correction_vectors(r.correction).density_control_factor(r.scale);
+  if(r.n) {
+    const auto counted = np.number_of_output_points(*r.n);
+    if(d.upper_bound) return std::make_unique<Sampler>(region, d.value, density_upper_bound(d.upper_bound, counted));
+    return std::make_unique<Sampler>(region, d.value, counted);
+  }
+  if(d.upper_bound) return std::make_unique<Sampler>(region, d.value, density_upper_bound(d.upper_bound, np));
+  return std::make_unique<Sampler>(region, d.value, np);
+}
+
+// The samples, x and y interleaved.
+std::vector<double> sample_coordinates(const Request& r, const Density& d)
+{
+  const std::unique_ptr<Sampler> sampler = make_sampler(r, d);
+  std::vector<double> xy;
+  xy.reserve(2 * std::size_t(sampler->expected_number_of_points() * 1.05 + 16));
+  (*sampler)(boost::make_function_output_iterator([&xy](const Point& p) {
+    xy.push_back(p.x());
+    xy.push_back(p.y());
+  }));
+  return xy;
+}
+
+struct Mesh
+{
+  std::vector<double> xy;                  // the vertices' points, x and y interleaved
+  std::vector<std::int32_t> simplices;     // three vertices a face, counter-clockwise
+  std::vector<std::int32_t> neighbors;     // the face opposite each vertex of each face, or -1
+};
+
+// The vertices are numbered in the order the construction reports them, then
+// the border points; the finite faces in the triangulation's order.
+Mesh triangulate_samples(const Request& r, const Density& d, bool boundary, bool neighbors,
+                         const std::function<double(double, double)>& border_density)
+{
+  const std::unique_ptr<Sampler> sampler = make_sampler(r, d);
+  Mesh m;
+  m.xy.reserve(2 * std::size_t(sampler->expected_number_of_points() * 1.05 + 16));
+  Triangulation t;
+  auto number = [&m](Triangulation::Vertex_handle v, const Point& p) {
+    v->info() = std::int32_t(m.xy.size() / 2);
+    m.xy.push_back(p.x());
+    m.xy.push_back(p.y());
+  };
+  t.build(*sampler, [](double x, double y) { return Point(x, y); },
+          [&number](Triangulation::Vertex_handle v, const Sampler::Sample& s) { number(v, s.point); });
+  if(boundary) {
+    const double scale = sampler->density_scale();
+    Triangulation::Face_handle hint;
+    penrose_tools::for_each_border_point(r.region, [&](double x, double y) { return scale * border_density(x, y); },
+                                         [&](double x, double y) {
+      const std::size_t before = t.number_of_vertices();
+      const Triangulation::Vertex_handle v = t.insert(Point(x, y), hint);
+      if(t.number_of_vertices() > before) number(v, v->point());
+      hint = v->face();
+    });
+  }
+  for(auto f : t.all_face_handles()) f->info() = -1;
+  std::int32_t faces = 0;
+  for(auto f : t.finite_face_handles()) f->info() = faces++;
+  m.simplices.reserve(3 * std::size_t(faces));
+  if(neighbors) m.neighbors.reserve(3 * std::size_t(faces));
+  for(auto f : t.finite_face_handles())
+    for(int i = 0; i < 3; ++i) {
+      m.simplices.push_back(f->vertex(i)->info());
+      if(neighbors) m.neighbors.push_back(f->neighbor(i)->info());
+    }
+  return m;
+}
+
+// Evaluates the pending points of `table` with `f`, in blocks.
+void evaluate_pending(Density_table& table, const py::function& f)
+{
+  const std::vector<std::pair<double, double>>& pending = table.pending();
+  std::vector<double> values;
+  values.reserve(pending.size());
+  constexpr std::size_t block = std::size_t(1) << 20;
+  for(std::size_t first = 0; first < pending.size(); first += block) {
+    const std::size_t count = std::min(block, pending.size() - first);
+    py::array_t<double> x(count), y(count);
+    double* px = x.mutable_data();
+    double* py_ = y.mutable_data();
+    for(std::size_t k = 0; k < count; ++k) {
+      px[k] = pending[first + k].first;
+      py_[k] = pending[first + k].second;
+    }
+    const py::array_t<double, py::array::forcecast> v = f(x, y);
+    if(v.ndim() > 1 || (v.size() != py::ssize_t(count) && v.size() != 1))
+      throw std::invalid_argument("the density function returned " + std::to_string(v.size())
+                                  + " values for arrays of " + std::to_string(count) + " points");
+    const double* pv = v.data();
+    for(std::size_t k = 0; k < count; ++k) values.push_back(v.size() == 1 ? pv[0] : pv[k]);
+  }
+  table.set_pending_values(values);
+}
+
+// Runs `construct` on a density that a Python function gives in blocks (see
+// Density_table), until a run asks for no point that was not evaluated yet.
+template <class Construct>
+auto run_on_table(Density_table& table, const py::function& f, Construct construct)
+{
+  for(;;) {
+    std::optional<decltype(construct())> result;
+    std::exception_ptr error;
+    {
+      py::gil_scoped_release release;
+      try {
+        result.emplace(construct());
+      } catch(...) {
+        error = std::current_exception();
+      }
+    }
+    if(table.pending().empty()) {
+      if(error) std::rethrow_exception(error);
+      return std::move(*result);
+    }
+    // A run that met points not yet evaluated decided on guesses there: what it threw does not count.
+    evaluate_pending(table, f);
+  }
+}
+
+// The table's guess: `f` on the grid of midpoints on which the sampler
+// estimates the integral (which then finds them known), interpolated; 0
+// where `f` is not a density there, so that the sampler reports that.
+std::function<double(double, double)> grid_guess(Density_table& table, const py::function& f,
+                                                 const std::array<double, 4>& region)
+{
+  constexpr std::size_t n = 512;
+  const double x0 = region[0], y0 = region[1], x1 = region[2], y1 = region[3];
+  const double dx = (x1 - x0) / n, dy = (y1 - y0) / n;
+  for(std::size_t j = 0; j < n; ++j)
+    for(std::size_t i = 0; i < n; ++i) table(x0 + (double(i) + 0.5) * dx, y0 + (double(j) + 0.5) * dy);
+  evaluate_pending(table, f);
+  std::vector<double> values(n * n);
+  for(std::size_t j = 0; j < n; ++j)
+    for(std::size_t i = 0; i < n; ++i)
+      values[(n - 1 - j) * n + i] = table(x0 + (double(i) + 0.5) * dx, y0 + (double(j) + 0.5) * dy);
+  try {
+    auto raster = std::make_shared<const CGAL::Raster_density_2<K>>(n, n, std::move(values), Rectangle(x0, y0, x1, y1));
+    return [raster](double x, double y) { return (*raster)(Point(x, y)); };
+  } catch(const std::invalid_argument&) {
+    return [](double, double) { return 0.; };
+  }
+}
+
+// Calls `construct(density)` with the density that `object` describes: a
+// number, a raster (a 2D array over the region, row 0 at the top) or a
+// Python function f(x, y) of arrays. The region defaults to the unit
+// square, and to (0, 0, width, height) for a raster: one unit a pixel.
+// A function is first evaluated where sampling needs it, when `construct`
+// costs more than sampling.
+template <class Construct>
+auto with_density(const py::object& object, const std::optional<std::array<double, 4>>& region, Request& r,
+                  bool sample_first, Construct construct)
+{
+  if(py::isinstance<py::function>(object)) {
+    r.region = region.value_or(std::array<double, 4>{0., 0., 1., 1.});
+    const py::function f = py::reinterpret_borrow<py::function>(object);
+    std::function<double(double, double)> guess = [](double, double) { return 0.; };
+    auto table = std::make_shared<Density_table>([&guess](double x, double y) { return guess(x, y); });
+    guess = grid_guess(*table, f, r.region);
+    const Density d{[table](const Point& p) { return (*table)(p.x(), p.y()); }, {}};
+    // The border is walked point after point, each step set by the density
+    // at the last point: a few thousand calls at most, made one at a time.
+    const std::function<double(double, double)> at = [&f](double x, double y) {
+      py::gil_scoped_acquire acquire;
+      const py::array_t<double, py::array::forcecast> v =
+        f(py::array_t<double>(1, &x), py::array_t<double>(1, &y));
+      if(v.size() != 1) throw std::invalid_argument("the density function did not return one value for one point");
+      return *v.data();
+    };
+    if(sample_first) run_on_table(*table, f, [&] { return sample_coordinates(r, d).size(); });
+    return run_on_table(*table, f, [&] { return construct(d, at); });
+  }
+  if(py::isinstance<py::array>(object)) {
+    const auto a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(object);
+    if(!a || a.ndim() != 2)
+      throw std::invalid_argument("a raster density must be a 2D array of numbers (rows from the top)");
+    const std::size_t height = std::size_t(a.shape(0)), width = std::size_t(a.shape(1));
+    r.region = region.value_or(std::array<double, 4>{0., 0., double(width), double(height)});
+    // Raster_density_2 checks the values and the region.
+    const auto raster = std::make_shared<CGAL::Raster_density_2<K>>(
+      width, height, std::vector<double>(a.data(), a.data() + a.size()),
+      Rectangle(r.region[0], r.region[1], r.region[2], r.region[3]));
+    const Density d{[raster](const Point& p) { return (*raster)(p); },
+                    [raster](const Rectangle& b) { return raster->upper_bound(b); }};
+    const std::function<double(double, double)> at = [raster](double x, double y) { return (*raster)(Point(x, y)); };
+    py::gil_scoped_release release;
+    return construct(d, at);
+  }
+  double c;
+  try {
+    c = object.cast<double>();
+  } catch(const py::cast_error&) {
+    throw std::invalid_argument("the density must be a number, a 2D array or a function f(x, y)");
+  }
+  if(!(c >= 0. && std::isfinite(c)))
+    throw std::invalid_argument("the density must be finite and non-negative, not " + std::to_string(c));
+  r.region = region.value_or(std::array<double, 4>{0., 0., 1., 1.});
+  const Density d{[c](const Point&) { return c; }, [c](const Rectangle&) { return c; }};
+  const std::function<double(double, double)> at = [c](double, double) { return c; };
+  py::gil_scoped_release release;
+  return construct(d, at);
+}
+
+Request make_request(const std::optional<py::object>& n, const std::optional<double>& scale, bool correction)
+{
+  Request r;
+  if(n && !n->is_none()) {
+    long long count;
+    try {
+      count = n->cast<long long>();
+    } catch(const py::cast_error&) {
+      throw std::invalid_argument("n must be a non-negative integer");
+    }
+    if(count < 0) throw std::invalid_argument("n must be a non-negative integer, not " + std::to_string(count));
+    r.n = std::size_t(count);
+  }
+  if(scale) {
+    if(!(*scale >= 0. && std::isfinite(*scale)))
+      throw std::invalid_argument("scale must be finite and non-negative, not " + std::to_string(*scale));
+    r.scale = *scale;
+  }
+  r.correction = correction;
+  return r;
+}
+
+py::array_t<double> sample(const py::object& density, const std::optional<std::array<double, 4>>& region,
+                           const std::optional<py::object>& n, const std::optional<double>& scale, bool correction)
+{
+  Request r = make_request(n, scale, correction);
+  std::vector<double> xy = with_density(density, region, r, false, [&r](const Density& d, const auto&) {
+    return sample_coordinates(r, d);
+  });
+  const std::size_t rows = xy.size() / 2;
+  return to_numpy(std::move(xy), rows, 2);
+}
+
+py::tuple triangulate(const py::object& density, const std::optional<std::array<double, 4>>& region,
+                      const std::optional<py::object>& n, const std::optional<double>& scale, bool correction,
+                      bool boundary, bool neighbors)
+{
+  Request r = make_request(n, scale, correction);
+  Mesh m = with_density(density, region, r, true, [&](const Density& d, const std::function<double(double, double)>& at) {
+    return triangulate_samples(r, d, boundary, neighbors, at);
+  });
+  const std::size_t vertices = m.xy.size() / 2, faces = m.simplices.size() / 3;
+  py::array_t<double> points = to_numpy(std::move(m.xy), vertices, 2);
+  py::array_t<std::int32_t> simplices = to_numpy(std::move(m.simplices), faces, 3);
+  if(!neighbors) return py::make_tuple(points, simplices);
+  return py::make_tuple(points, simplices, to_numpy(std::move(m.neighbors), faces, 3));
+}
+
+} // namespace penrose_python
+
+PYBIND11_MODULE(penrose_delaunay, m)
+{
+  using namespace pybind11::literals;
+  m.doc() = R"doc(Blue-noise points that follow a density, and their Delaunay triangulation.
+
+The points are those of the Penrose-tiling importance sampler of Ostromoukhov,
+Donohue and Jodoin (SIGGRAPH 2004), and the triangulation is derived from the
+sampler's tile tree, in time linear in the number of points, without locating
+a point: it is exactly the Delaunay triangulation of the points, equal to
+CGAL's and to scipy.spatial.Delaunay's where no four points are cocircular.
+The module wraps the C++ package CGAL::Penrose_Delaunay_triangulation_2.
+
+The density is a number of points per unit area, given as
+- a number: a constant density;
+- a 2D numpy array: a raster stretched over the region, row 0 at the top
+  (as an image), interpolated bilinearly between pixel centres; values
+  finite and non-negative;
+- a function f(x, y) of two float64 arrays returning an array of as many
+  densities (or one number). It is called in blocks of points while the
+  sampler is run again on the values known so far, until a run needs no new
+  value: slower than a raster (a few times the construction, plus f), but
+  exact. f is only ever called with the GIL held.
+
+Both functions release the GIL while the C++ code runs, and both are
+deterministic: the same arguments give the same points, bit for bit.
+Errors: ValueError for a bad density, region, count or scale (with the C++
+message), MemoryError for a request larger than 10^8 points or than the
+machine's memory; what the density function raises is raised as it is.)doc";
+
+  py::register_local_exception_translator([](std::exception_ptr p) {
+    try {
+      if(p) std::rethrow_exception(p);
+    } catch(const std::length_error& e) {
+      PyErr_SetString(PyExc_MemoryError, e.what());
+    } catch(const std::bad_alloc&) {
+      PyErr_SetString(PyExc_MemoryError, "penrose_delaunay: out of memory");
+    } catch(const std::invalid_argument& e) {
+      PyErr_SetString(PyExc_ValueError, e.what());
+    } catch(const std::range_error& e) {
+      PyErr_SetString(PyExc_ValueError, e.what());
+    }
+  });
+
+  m.def("sample", &penrose_python::sample, "density"_a, "region"_a = py::none(), "n"_a = py::none(),
+        "scale"_a = py::none(), "correction"_a = true,
+        R"doc(sample(density, region=None, n=None, scale=None, correction=True) -> ndarray (N, 2) float64
+
+Blue-noise samples of `density` over the rectangle `region` = (x0, y0, x1, y1),
+in the depth-first order of the tile tree.
+
+region: default (0, 0, 1, 1), or (0, 0, width, height) for a raster density.
+n: the number of points wanted: the density is scaled so that its integral
+   over the region (estimated on a 512 x 512 grid) is n. Default: the
+   integral of the density itself.
+scale: a factor applied to the density, after n. Default 1.
+correction: whether the samples are moved by the sampler's correction
+   vectors (better blue noise); without, they lie on tile vertices.)doc");
+
+  m.def("triangulate", &penrose_python::triangulate, "density"_a, "region"_a = py::none(), "n"_a = py::none(),
+        "scale"_a = py::none(), "correction"_a = true, "boundary"_a = false, "neighbors"_a = false,
+        R"doc(triangulate(density, region=None, n=None, scale=None, correction=True, boundary=False, neighbors=False)
+    -> (points (N, 2) float64, simplices (M, 3) int32[, neighbors (M, 3) int32])
+
+The samples of `sample()` with the same arguments, and their Delaunay
+triangulation. The points are those of `sample()`, in the order in which the
+construction makes them (the tile tree's, breadth first); `simplices` lists
+the vertices of each triangle, counter-clockwise.
+
+boundary: also add points along the border of the region, spaced at the
+   local density, so that the triangles cover the whole rectangle; they
+   come after the samples in `points`.
+neighbors: also return, as scipy.spatial.Delaunay does, the triangle
+   opposite each vertex of each triangle, -1 on the convex hull.
+The other arguments are those of `sample()`.)doc");
+}
