@@ -3,10 +3,11 @@
 //
 // Measures of how well a 2D point set is spread: normalised nearest-neighbour
 // distances (Lagae and Dutre 2008), coverage, and the radially averaged power
-// spectrum with its anisotropy.
+// spectrum with its anisotropy, for the benchmarks and the tests; a fixed
+// kernel, Epick, is enough for that.
 
-#ifndef CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_POINT_SET_QUALITY_H
-#define CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_POINT_SET_QUALITY_H
+#ifndef PENROSE_BENCHMARK_POINT_SET_QUALITY_H
+#define PENROSE_BENCHMARK_POINT_SET_QUALITY_H
 
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -17,13 +18,11 @@
 #include <limits>
 #include <vector>
 
-namespace CGAL {
 namespace Penrose_quality {
 
-typedef Exact_predicates_inexact_constructions_kernel K;
-typedef Delaunay_triangulation_2<K> Delaunay;
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef CGAL::Delaunay_triangulation_2<K> Delaunay;
 
-/// \ingroup PkgPenroseDelaunayTriangulation2Quality
 /// An axis-parallel rectangle: the window measured.
 struct Rectangle
 {
@@ -35,7 +34,6 @@ struct Rectangle
   double area() const { return (xmax - xmin) * (ymax - ymin); }
 };
 
-/// \ingroup PkgPenroseDelaunayTriangulation2Quality
 /// What `spacing()` measures, distances in units of `d_max` (Lagae and Dutre 2008).
 struct Spacing
 {
@@ -45,14 +43,12 @@ struct Spacing
   std::size_t measured; ///< points farther than 2 d_max from the border
 };
 
-/// \ingroup PkgPenroseDelaunayTriangulation2Quality
 /// The spacing of `n` points in a hexagonal packing of `area`: sqrt(2 `area` / (sqrt(3) `n`)).
 inline double packing_distance(std::size_t n, double area)
 {
   return std::sqrt(2. * area / (std::sqrt(3.) * double(n)));
 }
 
-/// \ingroup PkgPenroseDelaunayTriangulation2Quality
 /// Nearest-neighbour statistics of `points` (anything with `x()` and `y()`)
 /// in `r`, ignoring a band of 2 d_max along the border.
 template <class PointRange>
@@ -83,7 +79,6 @@ Spacing spacing(const PointRange& points, const Rectangle& r)
   return s;
 }
 
-/// \ingroup PkgPenroseDelaunayTriangulation2Quality
 /// Radius of the largest empty circle centred in `r`, over d_max. Voronoi
 /// vertices inside `r` are exact; the border is scanned in steps of d_max / 64.
 template <class PointRange>
@@ -117,7 +112,6 @@ double coverage_radius(const PointRange& points, const Rectangle& r)
   return std::sqrt(best) / d_max;
 }
 
-/// \ingroup PkgPenroseDelaunayTriangulation2Quality
 /// What `radial_power_spectrum()` measures: one entry per ring that holds
 /// at least two frequencies.
 struct Radial_spectrum
@@ -127,7 +121,6 @@ struct Radial_spectrum
   std::vector<double> anisotropy_db;  ///< the variance of the power over its squared mean, in dB
 };
 
-/// \ingroup PkgPenroseDelaunayTriangulation2Quality
 /// Radially averaged periodogram of `points` (anything with `x()` and
 /// `y()`) in the square window [x0, x0 + w]^2, on `rings` rings of
 /// frequency up to `max_frequency` (in units of 1/w), with the anisotropy
@@ -174,6 +167,5 @@ Radial_spectrum radial_power_spectrum(const PointRange& points, double x0, doubl
 }
 
 } // namespace Penrose_quality
-} // namespace CGAL
 
-#endif // CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_POINT_SET_QUALITY_H
+#endif // PENROSE_BENCHMARK_POINT_SET_QUALITY_H

@@ -12,7 +12,7 @@
 // OUT_PREFIX_cells.csv (i, j, count, expected).
 
 #include <CGAL/Penrose_Delaunay_triangulation_2.h>
-#include <CGAL/Penrose_Delaunay_triangulation_2/point_set_quality.h>
+#include "point_set_quality.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
@@ -27,7 +27,7 @@
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef K::Point_2 Point;
-namespace Q = CGAL::Penrose_quality;
+namespace Q = Penrose_quality;
 
 int main(int argc, char** argv)
 {

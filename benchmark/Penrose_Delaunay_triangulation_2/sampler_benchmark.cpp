@@ -10,7 +10,7 @@
 //                                              delta_min, delta_avg, anisotropy over one level
 
 #include <CGAL/Penrose_importance_sampler.h>
-#include <CGAL/Penrose_Delaunay_triangulation_2/point_set_quality.h>
+#include "point_set_quality.h"
 
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -26,7 +26,7 @@
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::Penrose_importance_sampler<K> Sampler;
-namespace Q = CGAL::Penrose_quality;
+namespace Q = Penrose_quality;
 
 using benchmark_support::median;
 using benchmark_support::now;

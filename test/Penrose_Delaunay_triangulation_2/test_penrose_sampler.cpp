@@ -9,7 +9,7 @@
 #include <CGAL/Penrose_importance_sampler.h>
 #include <CGAL/Penrose_tile_tree.h>
 #include <CGAL/Raster_density_2.h>
-#include <CGAL/Penrose_Delaunay_triangulation_2/point_set_quality.h>
+#include "point_set_quality.h"
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -33,7 +33,7 @@ namespace {
 typedef CGAL::Exact_predicates_inexact_constructions_kernel Epick;
 typedef CGAL::Penrose_importance_sampler<Epick> Sampler;
 typedef Epick::Point_2 Point;
-namespace Q = CGAL::Penrose_quality;
+namespace Q = Penrose_quality;
 
 const Epick::Iso_rectangle_2 unit_square(0, 0, 1, 1);
 const double phi2 = 2.6180339887498949;
