@@ -5,27 +5,16 @@
 #define CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_H
 
 #include <CGAL/Penrose_importance_sampler.h>
-#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Base_triangulation_builder.h>
-#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Construction_size.h>
-#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Flat_mesh.h>
-#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Flat_mesh_delaunay.h>
-#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Flat_mesh_editing.h>
-#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Tds_reservation.h>
-#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Two_halves.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Triangulation_construction.h>
 
 #include <CGAL/Default.h>
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
-#include <array>
-#include <cmath>
 #include <cstddef>
 #include <functional>
-#include <limits>
-#include <optional>
 #include <type_traits>
 #include <utility>
-#include <vector>
 
 namespace CGAL {
 
@@ -130,8 +119,6 @@ class Penrose_Delaunay_triangulation_2
   typedef typename Default::Get<Tds_, Triangulation_data_structure_2<
     Triangulation_vertex_base_2<Gt>, Triangulation_face_base_2<Gt>>>::type Tds;
   typedef Delaunay_triangulation_2<Gt, Tds> Base;
-  typedef internal::Penrose::Flat_mesh Flat_mesh;
-  typedef Flat_mesh::Index Index;
 
 public:
   /// \name Types
@@ -168,6 +155,7 @@ public:
 
   /// The triangulation of the points of `sampler`. Each point is made with
   /// the traits' `Construct_point_2` from its two coordinates.
+  /// \throws what `build()` throws.
   template <class SamplerTraits>
   explicit Penrose_Delaunay_triangulation_2(const Penrose_importance_sampler<SamplerTraits>& sampler,
                                             const Gt& gt = Gt())
@@ -179,6 +167,7 @@ public:
 
   /// The triangulation of the points of `sampler`, each made by `lift(x, y)`,
   /// for instance a 3D point with a height for `Projection_traits_xy_3`.
+  /// \throws what `build()` throws.
   template <class SamplerTraits, class Lift>
   Penrose_Delaunay_triangulation_2(const Penrose_importance_sampler<SamplerTraits>& sampler,
                                    const Lift& lift, const Gt& gt = Gt())
@@ -190,6 +179,8 @@ public:
   /// Samples `density` over `region` (see `Penrose_importance_sampler` for
   /// the named parameters, and `build()` for `callback`) and triangulates
   /// the samples.
+  /// \throws what the constructor of `Penrose_importance_sampler` and
+  /// `build()` throw.
   template <class Density, class NamedParameters = parameters::Default_named_parameters,
             class G = Gt, class = typename G::Iso_rectangle_2>
   Penrose_Delaunay_triangulation_2(const typename G::Iso_rectangle_2& region, const Density& density,
@@ -232,79 +223,15 @@ public:
   bool build(const Penrose_importance_sampler<SamplerTraits>& sampler, const Lift& lift, OnVertex on_vertex,
              const NamedParameters& np = parameters::default_values())
   {
-    constexpr bool visits = !std::is_same<OnVertex, No_vertex_visitor>::value;
     const std::function<bool(double)> callback =
       parameters::choose_parameter(parameters::get_parameter(np, internal_np::callback), std::function<bool(double)>());
-    auto abandon = [&]() {
-      this->clear();
-      stats_ = Construction_statistics();
-      return false;
-    };
-    // the advancements are the shares of the time that the steps end at (10^6 points)
-    auto proceed = [&](double advancement) { return !callback || callback(advancement); };
-    internal::Penrose::check_construction_size(sampler.expected_number_of_points(), peak_bytes_per_point(),
-                                               internal::Penrose::physical_memory_bytes());
-    const internal::Penrose::Sampling_context& context = sampler.context();
-    this->clear();
-    stats_ = Construction_statistics();
-    Flat_mesh mesh;
-    // where each sample of the region goes; NaN for the vertices to remove (freed with the builder)
-    internal::Penrose::Scratch_vector<std::pair<double, double>> target;
-    std::vector<std::pair<Index, internal::Penrose::Placed_sample>> placed;  // for on_vertex only
-    // freed by the TDS reservation's helper, where there is one
-    std::optional<internal::Penrose::Base_triangulation_builder> builder;
-    builder.emplace(context, mesh, visits);
-    {
-      std::function<bool(double)> progress;
-      if(callback) progress = [&callback](double f) { return callback(0.58 * f); };
-      if(!builder->build(sampler.expected_number_of_points(), progress)) return abandon();
-      target = builder->take_targets();
-      if(visits)
-        for(Index v = 0; v < target.size(); ++v)
-          if(!std::isnan(target[v].first)) placed.emplace_back(v, builder->sample(v));
-    }
-    const std::size_t n = target.size();
-    auto kept = [&](std::size_t v) { return !std::isnan(target[v].first); };
-    const std::array<Index, 3> frame = add_frame(mesh, context);
-
-    internal::Penrose::Flat_mesh_editor editor(mesh);
-    const std::vector<Index> inactive = inactive_vertices(mesh, n, kept, stats_.base_vertices);
-    const std::vector<Index> stuck = editor.remove_vertices(inactive, stats_.removed_vertices);
-    if(!proceed(0.61)) return abandon();
-    const std::vector<Index> unplaced = editor.move_vertices(target, stats_.repaired_vertices);
-    if(!proceed(0.66)) return abandon();
-
-    // keep of the targets only what is still needed: the rest is freed before the TDS grows
-    std::vector<std::pair<double, double>> unplaced_target;
-    for(Index v : unplaced) unplaced_target.push_back(target[v]);
-    // the TDS will have at most `live` finite vertices and the infinite one,
-    // and a face for each flat one
-    const std::size_t live = stats_.base_vertices + frame.size() - stats_.removed_vertices;
-    // blocks kept from an earlier construction and not taken by this one would add to its peak
-    internal::Penrose::release_kept_blocks();
-    Reservation reservation(live + 1, mesh.faces.size(), [&builder, &target] {
-      builder.reset();
-      decltype(target)().swap(target);
-    });
-    stats_.flips = internal::Penrose::make_delaunay(mesh);
-    if(!proceed(0.84)) return abandon();
-
-    auto handle = write_tds(mesh, lift, reservation, frame[0]);
-    mesh = Flat_mesh();
-    if(!proceed(0.99)) return abandon();
-    for(Index v : stuck) this->remove(handle[v]);
-    for(Index w : frame) this->remove(handle[w]);
-    for(std::size_t i = 0; i < unplaced.size(); ++i)
-      handle[unplaced[i]] = this->insert(lift(unplaced_target[i].first, unplaced_target[i].second));
-    stats_.fallbacks = stuck.size() + unplaced.size();
-    for(const auto& vp : placed)
-      if(handle[vp.first] != Vertex_handle()) on_vertex(handle[vp.first], sampler.to_sample(vp.second));
-    return proceed(1.) || abandon();
+    return internal::Penrose::Triangulation_construction<Penrose_Delaunay_triangulation_2>::run(
+      *this, sampler, lift, on_vertex, !std::is_same<OnVertex, No_vertex_visitor>::value, callback, stats_);
   }
 
   /// Clears the triangulation and builds that of the points of `sampler`,
   /// each made by `lift(x, y)`, as `build(sampler, lift, on_vertex)` does
-  /// with a visitor that does nothing.
+  /// with a visitor that does nothing, and throws what it throws.
   template <class SamplerTraits, class Lift>
   bool build(const Penrose_importance_sampler<SamplerTraits>& sampler, const Lift& lift)
   {
@@ -335,189 +262,10 @@ public:
   /// @}
 
 private:
-  // The peak of a construction: the flat mesh (about 100 bytes per point at
-  // the peak, which is while the mesh is made Delaunay and the TDS's vertices
-  // are reserved and its faces made beside it) and the TDS itself, with two
-  // faces per vertex.
-  static double peak_bytes_per_point()
-  {
-    typedef typename Triangulation_data_structure::Vertex Vertex;
-    typedef typename Triangulation_data_structure::Face Face;
-    return 100. + double(sizeof(Vertex)) + 2. * double(sizeof(Face));
-  }
-
-  // The vertices among the first `n` of the mesh that are in it and not
-  // `kept`, in order; `in_mesh` counts those in it. A walk over every vertex,
-  // bound by memory, so it is done in halves on two threads.
-  template <class Kept>
-  static std::vector<Index> inactive_vertices(const Flat_mesh& mesh, std::size_t n, const Kept& kept, std::size_t& in_mesh)
-  {
-    std::array<std::size_t, 2> count = {{0, 0}};
-    std::vector<Index> inactive = internal::Penrose::gather_in_two_halves<Index>(
-      n >= internal::Penrose::least_size_for_two_halves, [&](int half, std::vector<Index>& found) {
-        std::size_t present = 0;
-        const internal::Penrose::Half_range vertices = internal::Penrose::half_of(n, half);
-        for(std::size_t v = vertices.begin; v < vertices.end; ++v)
-          if(mesh.vertex_face[v] != Flat_mesh::null) {
-            ++present;
-            if(!kept(v)) found.push_back(Index(v));
-          }
-        count[half] = present;
-      });
-    in_mesh = count[0] + count[1];
-    return inactive;
-  }
-
   struct No_vertex_visitor
   {
     template <class V, class S> void operator()(V, const S&) const {}
   };
-
-  // Three far vertices and the triangles between them and the root tile, so
-  // that every vertex of the tile tree is interior. The root tile's boundary
-  // is walked counter-clockwise from its corner 0: its edge e runs from
-  // corner e to corner e + 1, and the vertices 0, 1, 2 are those corners.
-  static std::array<Index, 3> add_frame(Flat_mesh& m, const internal::Penrose::Sampling_context& c)
-  {
-    double cx = 0., cy = 0.;
-    for(int i = 0; i < 3; ++i) { cx += c.root_x(i) / 3.; cy += c.root_y(i) / 3.; }
-    std::array<Index, 3> w;
-    for(int e = 0; e < 3; ++e) {
-      const double mx = 0.5 * (c.root_x(e) + c.root_x((e + 1) % 3)) - cx;
-      const double my = 0.5 * (c.root_y(e) + c.root_y((e + 1) % 3)) - cy;
-      w[e] = m.add_vertex(cx + 8. * mx, cy + 8. * my);
-    }
-    // Each boundary edge a -> b of root edge e gets the face (b, a, w[e])
-    // outside it; consecutive ones share their edge from b to w[e], and at
-    // corner e the face (w[e - 1], w[e], e) closes the gap.
-    Index first = Flat_mesh::null, previous = Flat_mesh::null;
-    Index a = 0;
-    int e = 0;
-    do {
-      const auto [f, i] = boundary_edge_from(m, a);
-      const Index b = m.faces[f].v[Flat_mesh::cw(i)];
-      const Index g = m.create_face(b, a, w[e]);
-      m.link(g, 2, f, i);
-      if(previous == Flat_mesh::null) first = g;
-      else if(a < 3) close_corner(m, w, e, previous, g);
-      else m.link(previous, 1, g, 0);
-      previous = g;
-      a = b;
-      if(a < 3) e = int(a);
-    } while(a != 0);
-    close_corner(m, w, 0, previous, first);
-    return w;
-  }
-
-  // The boundary edge of the flat mesh that leaves its vertex b, as (face,
-  // edge index): the faces around b are turned clockwise until there is
-  // nothing across.
-  static std::pair<Index, int> boundary_edge_from(const Flat_mesh& m, Index b)
-  {
-    Index f = m.vertex_face[b];
-    for(Index g = m.cw_face_around(f, b); g != Flat_mesh::null; g = m.cw_face_around(f, b)) f = g;
-    return {f, Flat_mesh::cw(m.index_of_vertex(f, b))};
-  }
-
-  // The corner face (w[e - 1], w[e], e) between the frame faces `before` and
-  // `after` of root corner e.
-  static void close_corner(Flat_mesh& m, const std::array<Index, 3>& w, int e, Index before, Index after)
-  {
-    const Index h = m.create_face(w[(e + 2) % 3], w[e], Index(e));
-    m.link(before, 1, h, 1);
-    m.link(h, 0, after, 0);
-  }
-
-  typedef internal::Penrose::Tds_reservation<Triangulation_data_structure> Reservation;
-
-  // Writes the flat mesh, a disk whose boundary passes through its vertex
-  // `on_boundary`, into the TDS of `reservation`, which then becomes this
-  // triangulation's; the mesh's coordinates are released as soon as the TDS
-  // vertices hold them.
-  template <class Lift>
-  internal::Penrose::Large_vector<Vertex_handle> write_tds(Flat_mesh& m, const Lift& lift, Reservation& reservation,
-                                                           Index on_boundary)
-  {
-    constexpr std::size_t ahead = Flat_mesh::fetch_distance;
-    // the vertices first, while the helper may still make the faces
-    Triangulation_data_structure& prepared_tds = reservation.tds_for_vertices();
-    const Vertex_handle infinite = prepared_tds.create_vertex();
-    internal::Penrose::Large_vector<Vertex_handle> vh(m.vertex_face.size());
-    for(std::size_t v = 0; v < vh.size(); ++v)
-      if(m.vertex_face[v] != Flat_mesh::null) {
-        vh[v] = prepared_tds.create_vertex();
-        vh[v]->set_point(lift(m.points[v].x(), m.points[v].y()));
-      }
-    decltype(m.points)().swap(m.points);
-    const bool prepared = reservation.prepared();
-    Triangulation_data_structure& tds = this->tds();
-    tds.swap(reservation.tds());
-    this->set_infinite_vertex(infinite);
-    tds.set_dimension(2);
-    // the edges without a face across, counter-clockwise
-    std::vector<std::pair<Index, int>> boundary;
-    Index next = on_boundary;
-    do {
-      boundary.push_back(boundary_edge_from(m, next));
-      next = m.faces[boundary.back().first].v[Flat_mesh::cw(boundary.back().second)];
-    } while(next != on_boundary);
-    // The TDS face of flat face f, dead or alive, is the f-th made.
-    typename Reservation::Faces made;
-    if(prepared) {
-      made = std::move(reservation.faces());
-    } else {
-      for(std::size_t f = 0; f < m.faces.size(); ++f) made.record(tds.create_face());
-      made.index();
-    }
-    CGAL_assertion(made.size() == m.faces.size());
-    // Each face's vertices and neighbours, and each vertex's face, change no
-    // container: bound by memory, they take two threads, in halves.
-    // The dead faces, found on the way, are never faces of the triangulation.
-    auto write_faces = [&m, &made, &vh](internal::Penrose::Half_range faces, std::vector<Index>& dead) {
-      const std::size_t end = faces.end;
-      for(std::size_t f = faces.begin; f < end; ++f) {
-        if(f + ahead < end)
-          for(Index v : m.faces[f + ahead].v) CGAL_PENROSE_PREFETCH(&vh[v]);
-        if(!m.face_alive[f]) {
-          dead.push_back(Index(f));
-          continue;
-        }
-        const Flat_mesh::Face& F = m.faces[f];
-        const Face_handle h = made[f];
-        h->set_vertices(vh[F.v[0]], vh[F.v[1]], vh[F.v[2]]);
-        for(int i = 0; i < 3; ++i)
-          if(F.n[i] != Flat_mesh::null) h->set_neighbor(i, made[F.n[i]]);
-      }
-    };
-    auto give_vertices_a_face = [&m, &made, &vh](internal::Penrose::Half_range vertices) {
-      for(std::size_t v = vertices.begin; v < vertices.end; ++v)
-        if(vh[v] != Vertex_handle()) vh[v]->set_face(made[m.vertex_face[v]]);
-    };
-    const std::vector<Index> dead = internal::Penrose::gather_in_two_halves<Index>(
-      vh.size() >= internal::Penrose::least_size_for_two_halves, [&](int half, std::vector<Index>& dead_in_half) {
-        write_faces(internal::Penrose::half_of(m.faces.size(), half), dead_in_half);
-        give_vertices_a_face(internal::Penrose::half_of(vh.size(), half));
-      });
-    for(Index f : dead) tds.faces().erase(made[f]);
-    std::vector<std::pair<Vertex_handle, Face_handle>> hull;  // infinite face (inf, b, a), keyed by b
-    for(const auto& [f, i] : boundary) {
-      const Face_handle F = made[f];
-      const Vertex_handle a = F->vertex(Flat_mesh::ccw(i)), b = F->vertex(Flat_mesh::cw(i));
-      const Face_handle h = tds.create_face(infinite, b, a);
-      h->set_neighbor(0, F);
-      F->set_neighbor(i, h);
-      hull.emplace_back(b, h);
-    }
-    // (inf, b, a) borders (inf, a, c) across the edge inf-a, and (inf, d, b) across inf-b
-    for(auto& bh : hull)
-      for(auto& other : hull)
-        if(other.second->vertex(1) == bh.second->vertex(2)) {
-          bh.second->set_neighbor(1, other.second);
-          other.second->set_neighbor(2, bh.second);
-        }
-    infinite->set_face(hull.front().second);
-    return vh;
-  }
 
   Construction_statistics stats_;
 };

@@ -7,6 +7,7 @@
 #include <CGAL/Penrose_tile_tree.h>
 #include <CGAL/Penrose_Delaunay_triangulation_2/named_parameters.h>
 #include <CGAL/Penrose_Delaunay_triangulation_2/internal/Depth_first_sampling.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Sampler_access.h>
 #include <CGAL/Penrose_Delaunay_triangulation_2/internal/Sampling_context.h>
 #include <CGAL/Penrose_Delaunay_triangulation_2/internal/correction_vectors.h>
 
@@ -257,9 +258,11 @@ public:
   double expected_number_of_points() const { return expected_; }
   /// Whether the samples are moved by their correction vectors (named parameter `use_correction_vectors`).
   bool uses_correction_vectors() const { return context_->correction_table() != nullptr; }
-  /// The shared sampling context (advanced).
-  const internal::Penrose::Sampling_context& context() const { return *context_; }
-  /// Converts a sample of the context into a `Sample`.
+  /// @}
+
+private:
+  friend struct internal::Penrose::Sampler_access;
+
   Sample to_sample(const internal::Penrose::Placed_sample& s) const
   {
     auto construct_point = traits_.construct_point_2_object();
@@ -268,9 +271,7 @@ public:
                    s.importance, s.leaf_level, s.leaf_code, s.threshold,
                    s.structural_index, s.importance_index };
   }
-  /// @}
 
-private:
   template <class F>
   void for_each_placed(F&& f) const
   {

@@ -723,6 +723,7 @@ TEST(Internals, BaseMeshThatWouldOutgrowMemoryIsRefusedBeforeItGrows)
   // within what was reserved is not refused
   using CGAL::internal::Penrose::Base_triangulation_builder;
   using CGAL::internal::Penrose::Flat_mesh;
+  using CGAL::internal::Penrose::Sampler_access;
   const double budget = 64. * (1 << 20);
   auto one = [](const Point&) { return 1.; };
   auto loose = [](const Epick::Iso_rectangle_2&) { return 64.; };
@@ -730,7 +731,7 @@ TEST(Internals, BaseMeshThatWouldOutgrowMemoryIsRefusedBeforeItGrows)
     const Sampler s(unit_square, one,
                     CGAL::parameters::density_upper_bound(loose, CGAL::parameters::number_of_output_points(n)));
     Flat_mesh mesh;
-    Base_triangulation_builder builder(s.context(), mesh, false, budget);
+    Base_triangulation_builder builder(Sampler_access::context(s), mesh, false, budget);
     std::string message = "not refused";
     try {
       builder.build(s.expected_number_of_points(), std::function<bool(double)>());
@@ -743,7 +744,7 @@ TEST(Internals, BaseMeshThatWouldOutgrowMemoryIsRefusedBeforeItGrows)
 
     const Sampler tight(unit_square, one, CGAL::parameters::number_of_output_points(n));
     Flat_mesh fitting;
-    EXPECT_TRUE(Base_triangulation_builder(tight.context(), fitting, false, budget)
+    EXPECT_TRUE(Base_triangulation_builder(Sampler_access::context(tight), fitting, false, budget)
                   .build(tight.expected_number_of_points(), std::function<bool(double)>())) << n;
     EXPECT_GT(fitting.points.size(), n / 2) << n;
   }

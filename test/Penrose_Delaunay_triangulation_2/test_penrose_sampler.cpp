@@ -589,7 +589,7 @@ TEST(Sampler, RegionPruningDropsNoSample)
   // show: a margin 5% thinner lets 4 of the 1.9 million samples in.
   using namespace CGAL::internal::Penrose;
   const Sampler sampler(unit_square, [](const Point&) { return 1.; }, CGAL::parameters::number_of_output_points(1000));
-  const Sampling_context& c = sampler.context();
+  const Sampling_context& c = Sampler_access::context(sampler);
   ASSERT_NE(c.correction_table(), nullptr);
   std::mt19937_64 rng(20261122);
   std::uniform_real_distribution<double> u(0., 1.);
