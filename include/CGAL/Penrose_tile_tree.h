@@ -163,9 +163,11 @@ private:
     tiles_.push_back(Tile{0, {{0, 1, 2}}, {{null_index, null_index, null_index}}, null_index,
                           internal::Penrose::FAT_F, 15, 0, 0});
     level_begin_ = {0, 1};
+    std::size_t refined = 0;
     for(int level = 0; level_begin_[level] < level_begin_[level + 1]; ++level) {
       for(Index t = level_begin_[level]; t < level_begin_[level + 1]; ++t)
         if(should_refine(t)) {
+          context_.check_refinement(++refined);
           if(tiles_.size() + 3 > tiles_.capacity()) check_room_to_grow(level);
           subdivide(t);
         }

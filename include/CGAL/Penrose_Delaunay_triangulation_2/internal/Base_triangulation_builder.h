@@ -128,6 +128,7 @@ public:
     std::size_t tiles_done = 0;
     auto report = [&](double tiles) { return !progress || progress((std::min)(0.99, tiles / expected_tiles)); };
     for(int level = 0; !frontier_.empty(); ++level) {
+      c_.check_refinement(tiles_done + frontier_.size());
       work_.assign(frontier_.size(), Work());
       next_.clear();
       const double done = double(tiles_done), half = 0.5 * double(frontier_.size());

@@ -45,7 +45,8 @@ void for_each_sample_depth_first(const Sampling_context& context, Visitor&& visi
   if(context.should_refine(root.level, root.threshold, root.x, root.y, root.importance)) ++top;
 
   double x[5], y[5], importance[5];
-  while(top > 0) {
+  for(std::size_t refined = 1; top > 0; ++refined) {
+    context.check_refinement(refined);
     // read in place, not copied: a copy of a node just pushed stalls on the
     // stores that wrote it. Its children overwrite it, once it is read.
     const Node& t = stack[--top];

@@ -10,6 +10,7 @@
 #include <CGAL/Penrose_Delaunay_triangulation_2/internal/Correction_table.h>
 #include <CGAL/Penrose_Delaunay_triangulation_2/internal/Fibonacci_code.h>
 #include <CGAL/Penrose_Delaunay_triangulation_2/internal/Penrose_rules.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Size_limits.h>
 
 #include <algorithm>
 #include <array>
@@ -71,11 +72,15 @@ public:
   // upper bound of the density over the box [x0, x1] x [y0, y1]
   typedef std::function<double(double, double, double, double)> Density_bound;
 
+  // `expected_points` sets the most tiles that a traversal may subdivide
+  // (see refinement_budget()); infinite: no limit.
   Sampling_context(double xmin, double ymin, double xmax, double ymax,
                    Density density, Density_bound bound,
-                   double points_per_density_unit, const Correction_table* table)
+                   double points_per_density_unit, const Correction_table* table,
+                   double expected_points = std::numeric_limits<double>::infinity())
     : xmin_(xmin), ymin_(ymin), xmax_(xmax), ymax_(ymax),
       density_(std::move(density)), bound_(std::move(bound)), table_(table),
+      expected_points_(expected_points), most_refined_tiles_(refinement_budget(expected_points)),
       importance_bins_(table ? table->importance_bins : 21u)
   {
     check_region(xmin, ymin, xmax, ymax);
@@ -126,6 +131,15 @@ public:
   double root_y(int i) const { return root_y_[i]; }
   double importance_per_density() const { return importance_per_density_; }
   const Correction_table* correction_table() const { return table_; }
+  // The most tiles that a traversal of the tree may subdivide, checked as it grows.
+  std::size_t most_refined_tiles() const { return most_refined_tiles_; }
+
+  // Throws std::length_error once a traversal has subdivided more than
+  // most_refined_tiles() tiles.
+  void check_refinement(std::size_t refined_tiles) const
+  {
+    if(refined_tiles > most_refined_tiles_) throw_overrefined();
+  }
 
   // Importance at (x, y), read at the nearest point of the region: the density
   // is never evaluated outside the region, and tiles that straddle its border
@@ -230,6 +244,16 @@ private:
     throw std::invalid_argument(msg.str());
   }
 
+  [[noreturn]] void throw_overrefined() const
+  {
+    std::ostringstream msg;
+    msg.precision(3);
+    msg << "Penrose_importance_sampler: more than " << double(most_refined_tiles_) << " tiles refined for about "
+        << expected_points_ << " points expected (at most " << most_refined_tiles_per_point << " a point, plus "
+        << least_refinement_budget << ")" << overrefinement_hint;
+    throw std::length_error(msg.str());
+  }
+
   // (x, y): where the density was evaluated
   [[noreturn]] void throw_too_dense(double x, double y, double importance) const
   {
@@ -284,6 +308,8 @@ private:
   Density density_;
   Density_bound bound_;
   const Correction_table* table_;
+  double expected_points_;
+  std::size_t most_refined_tiles_;
   double root_scale_;
   double importance_per_point_density_;  // of a density of one point per unit area
   double importance_per_density_;
