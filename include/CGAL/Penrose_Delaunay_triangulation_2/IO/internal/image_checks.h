@@ -4,7 +4,8 @@
 // What an image file may hold, checked before stb_image decodes it: stb
 // allocates the pixels that a header claims before it reads them, and the
 // JPEG decoder of version 2.27 (Debian 12) decodes a file cut short as if
-// zeros followed. Only PNG and JPEG go to stb_image; the package reads PNM
+// zeros followed: the structure of a file, its chunks or markers, is walked
+// to its end first. Only PNG and JPEG go to stb_image; the package reads PNM
 // and Radiance HDR itself.
 
 #ifndef CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_IO_INTERNAL_IMAGE_CHECKS_H
@@ -37,6 +38,21 @@ inline Image_format image_format(const std::string& bytes)
 inline std::runtime_error unknown_format(const std::string& file)
 {
   return file_error(file, "cannot read as an image (not a PNG, JPEG, PGM/PPM or Radiance HDR file)");
+}
+
+// Whether each chunk of the PNG `bytes` lies within the file, up to IEND:
+// stb_image allocates the length that an IDAT chunk claims before it reads it.
+inline bool png_is_complete(const std::string& bytes)
+{
+  const unsigned char* d = reinterpret_cast<const unsigned char*>(bytes.data());
+  const std::size_t n = bytes.size();
+  for(std::size_t at = 8; n - at >= 12;) {
+    const std::size_t length = std::size_t(d[at]) << 24 | std::size_t(d[at + 1]) << 16 | std::size_t(d[at + 2]) << 8 | d[at + 3];
+    if(length > n - at - 12) return false;
+    if(bytes.compare(at + 4, 4, "IEND") == 0) return true;
+    at += 12 + length;
+  }
+  return false;
 }
 
 // Whether the JPEG `bytes` reaches its end-of-image marker: the marker
@@ -89,8 +105,8 @@ inline Stb_image_bytes stb_image_bytes(const std::string& file, const std::strin
   if(double(b.width) * double(b.height) > most)
     throw file_error(file, "truncated or corrupt image (" + std::to_string(bytes.size()) + " bytes cannot hold its "
                            + std::to_string(b.width) + " x " + std::to_string(b.height) + " pixels)");
-  if(format == Image_format::jpeg && !jpeg_is_complete(bytes))
-    throw file_error(file, "truncated or corrupt image (no end-of-image marker)");
+  if(!(format == Image_format::png ? png_is_complete(bytes) : jpeg_is_complete(bytes)))
+    throw file_error(file, "truncated or corrupt image (its chunks or markers run past the end of the file)");
   return b;
 }
 
