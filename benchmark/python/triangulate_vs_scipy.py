@@ -8,8 +8,10 @@
 For each kind of density (a number, a 256 x 256 raster, a Python function),
 the whole triangulate() call, sampling included, and scipy's Delaunay (Qhull)
 of the points it returned are timed in this process, alternately; the
-medians of RUNS runs and their ratio are printed, with a check that the
-triangles are the same.
+medians of RUNS runs and their ratio are printed, with the number of
+triangles found by only one of the two. Qhull decides in floating point and
+merges the flattest triangles along the convex hull, which exact predicates
+keep: at 10^6 points a few dozen hull slivers are the package's only.
 """
 
 import statistics
@@ -36,7 +38,7 @@ def timed(f):
 def main(n=1000000, runs=5):
     densities = {"number": 1.0, "raster 256x256": raster(), "function 1+4x": lambda x, y: 1 + 4 * x}
     print(f"{n} points, medians of {runs} runs")
-    print("density, triangulate() s, scipy Delaunay s, ratio, same triangles")
+    print("density, triangulate() s, scipy Delaunay s, ratio, triangles only ours, only scipy's")
     for name, density in densities.items():
         ours, theirs = [], []
         for _ in range(runs):
@@ -44,9 +46,10 @@ def main(n=1000000, runs=5):
             ours.append(t)
             t, reference = timed(lambda: Delaunay(points))
             theirs.append(t)
-        same = set(map(tuple, np.sort(simplices, axis=1))) == set(map(tuple, np.sort(reference.simplices, axis=1)))
+        mine = set(map(tuple, np.sort(simplices, axis=1)))
+        qhull = set(map(tuple, np.sort(reference.simplices, axis=1)))
         a, b = statistics.median(ours), statistics.median(theirs)
-        print(f"{name}, {a:.3f}, {b:.3f}, {a / b:.3f}, {same}")
+        print(f"{name}, {a:.3f}, {b:.3f}, {a / b:.3f}, {len(mine - qhull)}, {len(qhull - mine)}")
 
 
 if __name__ == "__main__":
