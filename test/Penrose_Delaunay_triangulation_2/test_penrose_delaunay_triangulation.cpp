@@ -3,7 +3,10 @@
 //
 // Penrose_Delaunay_triangulation_2 against CGAL's own triangulators on the
 // same points: the edge sets must be equal, for many densities, sizes and
-// traits classes, and the triangulation must stay valid under edits.
+// traits classes, and the triangulation must stay valid under edits; and
+// test_triangulation<Gt, Tds>(), what the triangulation promises for any
+// traits and TDS, run over Epick, Epeck, Simple_cartesian<Gmpq>,
+// Projection_traits_xy_3<Epick> and a vertex base with info.
 
 #include <CGAL/Penrose_Delaunay_triangulation_2.h>
 
@@ -33,6 +36,7 @@
 #include <set>
 #include <sstream>
 #include <thread>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -64,18 +68,19 @@ std::set<Edge_key> edge_set(const Triangulation& t, XY xy)
 std::pair<double, double> xy_of(const Point& p) { return {p.x(), p.y()}; }
 
 // The reference: CGAL's range insertion, and the Devillers hierarchy fed one
-// point at a time, on the sampler's points made by `lift` in the traits Gt;
-// `sampled`, if given, receives the sampler's points.
-template <class Gt, class Lift, class XY>
-void expect_matches_cgal(const CGAL::Penrose_Delaunay_triangulation_2<Gt>& pdt, const Sampler& s, const Lift& lift,
-                         const XY& xy, const std::string& what, std::vector<Point>* sampled = nullptr)
+// point at a time, on the points of the sampler `s` made by `lift` in the
+// traits of `pdt`; `sampled`, if given, receives the sampler's points.
+template <class Pdt, class S, class Lift, class XY>
+void expect_matches_cgal(const Pdt& pdt, const S& s, const Lift& lift, const XY& xy, const std::string& what,
+                         std::vector<typename S::Point_2>* sampled = nullptr)
 {
+  typedef typename Pdt::Geom_traits Gt;
   typedef typename Gt::Point_2 P;
   ASSERT_TRUE(pdt.is_valid()) << what;
-  std::vector<Point> planar;
+  std::vector<typename S::Point_2> planar;
   s(std::back_inserter(planar));
   std::vector<P> points;
-  for(const Point& p : planar) points.push_back(lift(p.x(), p.y()));
+  for(const auto& p : planar) points.push_back(lift(CGAL::to_double(p.x()), CGAL::to_double(p.y())));
   if(sampled != nullptr) sampled->swap(planar);
   const CGAL::Delaunay_triangulation_2<Gt> dt(points.begin(), points.end());
   CGAL::Triangulation_hierarchy_2<CGAL::Delaunay_triangulation_2<Gt,
@@ -183,136 +188,6 @@ TEST(Triangulation, LargeEnoughForHugePagesMatchesCgal)
                               CGAL::parameters::number_of_output_points(400000)), "400000 points");
 }
 
-// Grown one element at a time, a vector of `Vector` moves from
-// std::allocator to mapped pages (aligned to `alignment` where mapped);
-// shrunk, back again. Its contents survive both moves.
-template <class Vector>
-void expect_contents_kept_across_threshold(std::uint64_t n, std::uintptr_t alignment)
-{
-  Vector v;
-  for(std::uint64_t i = 0; i < n; ++i) v.push_back(i * 0x9e3779b97f4a7c15u);
-#if defined(CGAL_PENROSE_HUGE_PAGES)
-  EXPECT_EQ(reinterpret_cast<std::uintptr_t>(v.data()) % alignment, 0u);
-#else
-  (void)alignment;
-#endif
-  std::size_t wrong = 0;
-  for(std::uint64_t i = 0; i < n; ++i) wrong += v[i] != i * 0x9e3779b97f4a7c15u;
-  EXPECT_EQ(wrong, 0u);
-  v.resize(1000);
-  v.shrink_to_fit();
-  for(std::uint64_t i = 0; i < 1000; ++i) wrong += v[i] != i * 0x9e3779b97f4a7c15u;
-  EXPECT_EQ(wrong, 0u);
-}
-
-TEST(Internals, HugePageAllocatorKeepsContentsAcrossItsThreshold)
-{
-  expect_contents_kept_across_threshold<CGAL::internal::Penrose::Large_vector<std::uint64_t>>(3000000, 1u << 21);
-}
-
-TEST(Internals, SmallPageAllocatorKeepsContentsAcrossItsThreshold)
-{
-  expect_contents_kept_across_threshold<CGAL::internal::Penrose::Scratch_vector<std::uint64_t>>(1000000, 4096u);
-}
-
-TEST(Internals, HugePageAllocatorReusesAReleasedBlockUntilReleasedForGood)
-{
-  typedef CGAL::internal::Penrose::Huge_page_allocator<double> Allocator;
-  const std::size_t n = 3000000;  // 24 MB
-  Allocator a;
-  double* first = a.allocate(n);
-  for(std::size_t i = 0; i < n; i += 512) first[i] = double(i);
-  a.deallocate(first, n);
-  double* second = a.allocate(n);
-#if defined(CGAL_PENROSE_HUGE_PAGES)
-  EXPECT_EQ(first, second);
-#endif
-  // whatever the kernel did with the released block, it is usable
-  std::size_t wrong = 0;
-  for(std::size_t i = 0; i < n; ++i) second[i] = double(i);
-  for(std::size_t i = 0; i < n; ++i) wrong += second[i] != double(i);
-  EXPECT_EQ(wrong, 0u);
-  a.deallocate(second, n);
-  // unmapped now: a fresh mapping reads as zeros (malloc's memory need not)
-  CGAL::internal::Penrose::release_kept_blocks();
-  double* third = a.allocate(n);
-#if defined(CGAL_PENROSE_HUGE_PAGES)
-  for(std::size_t i = 0; i < n; i += 512) wrong += third[i] != 0.;
-  EXPECT_EQ(wrong, 0u);
-#endif
-  a.deallocate(third, n);
-  CGAL::internal::Penrose::release_kept_blocks();
-}
-
-TEST(Internals, LookaheadWorkerHandsResultsInOrderAndRethrows)
-{
-  using CGAL::internal::Penrose::Lookahead_worker;
-  for(bool wanted : {false, true}) {
-    Lookahead_worker worker(wanted);
-    if(!wanted) { EXPECT_FALSE(worker.running()); }
-    const std::size_t n = 100000;
-    std::vector<std::size_t> out(n, 0);
-    for(int batch = 1; batch <= 3; ++batch) {
-      worker.start(n, [&out, batch](std::size_t b, std::size_t e) {
-        for(std::size_t k = b; k < e; ++k) out[k] = k * k + std::size_t(batch);
-      });
-      std::size_t wrong = 0;
-      for(std::size_t k = 0; k < n; ++k) {
-        worker.wait_for(k);
-        wrong += out[k] != k * k + std::size_t(batch);
-      }
-      EXPECT_EQ(wrong, 0u) << wanted << " " << batch;
-    }
-    // a job that throws at item 70000: the throw reaches the caller (at
-    // start() without a helper, which does the jobs at once; at the wait
-    // for an item of its chunk with one), and the worker goes on
-    std::string message;
-    std::size_t handed = 0;
-    try {
-      worker.start(n, [](std::size_t b, std::size_t e) {
-        for(std::size_t k = b; k < e; ++k)
-          if(k == 70000) throw std::runtime_error("item 70000");
-      });
-      for(; handed < n; ++handed) worker.wait_for(handed);
-    } catch(const std::runtime_error& e) {
-      message = e.what();
-    }
-    EXPECT_EQ(message, "item 70000") << wanted;
-    EXPECT_LE(handed, 70000u) << wanted;
-    // with a helper, the items before the chunk that threw were handed over
-    if(worker.running()) { EXPECT_GT(handed, 70000u - 1024u); }
-    worker.start(0, [](std::size_t, std::size_t) {});
-    worker.wait_for_all();
-    std::vector<int> empty_batch_seen;
-    worker.start(10, [&empty_batch_seen](std::size_t b, std::size_t e) {
-      for(std::size_t k = b; k < e; ++k) empty_batch_seen.push_back(int(k));
-    });
-    worker.wait_for_all();
-    EXPECT_EQ(empty_batch_seen.size(), 10u) << wanted;
-  }
-}
-
-TEST(Internals, TwoHalvesRunBothHalvesTheSecondOnAHelper)
-{
-  for(bool worth_a_thread : {false, true}) {
-    std::array<std::thread::id, 2> ran_on;
-    std::array<int, 2> runs = {{0, 0}};
-    CGAL::internal::Penrose::run_in_two_halves(worth_a_thread, [&](int half) noexcept {
-      ran_on[half] = std::this_thread::get_id();
-      ++runs[half];
-    });
-    EXPECT_EQ(runs[0], 1);
-    EXPECT_EQ(runs[1], 1);
-    EXPECT_EQ(ran_on[0], std::this_thread::get_id());
-#if defined(CGAL_PENROSE_HELPER_THREADS)
-    const bool helped = worth_a_thread && CGAL::internal::Penrose::more_than_one_core();
-#else
-    const bool helped = false;
-#endif
-    EXPECT_EQ(ran_on[1] != std::this_thread::get_id(), helped) << worth_a_thread;
-  }
-}
-
 #if defined(CGAL_PENROSE_HELPER_THREADS) && defined(__linux__) && defined(CPU_COUNT)
 TEST(Triangulation, HelperThreadsChangeNothingInTheConstruction)
 {
@@ -382,111 +257,6 @@ TEST(Triangulation, BadDensityFoundByTheHelperThrowsAsWithout)
   s(std::back_inserter(points));
   const CGAL::Delaunay_triangulation_2<Epick> dt(points.begin(), points.end());
   EXPECT_TRUE(edge_set(pdt, xy_of) == edge_set(dt, xy_of));
-}
-
-TEST(Internals, TdsReservationReleasesThenMakesTheFacesOnAHelper)
-{
-  typedef CGAL::Penrose_Delaunay_triangulation_2<Epick>::Triangulation_data_structure Tds;
-  typedef CGAL::internal::Penrose::Tds_reservation<Tds> Reservation;
-  const std::size_t large = Reservation::least_vertices, small = large - 1;
-#if defined(CGAL_PENROSE_HELPER_THREADS)
-  const bool helped = CGAL::internal::Penrose::more_than_one_core();
-#else
-  const bool helped = false;
-#endif
-  for(const std::size_t n : {small, large}) {
-    const std::size_t faces = 2 * n - 3;  // odd: the first half is the shorter
-    std::thread::id released_on;
-    Reservation reservation(n, faces, [&released_on] { released_on = std::this_thread::get_id(); });
-    const bool prepared = reservation.prepared();
-    const Reservation::Faces& made = reservation.faces();
-    const Tds& tds = reservation.tds();
-    EXPECT_EQ(prepared, helped && n == large) << n;
-    // the release always runs, on the helper where there is one
-    EXPECT_EQ(released_on == std::this_thread::get_id(), !prepared);
-    EXPECT_EQ(tds.number_of_vertices(), 0u);
-    EXPECT_EQ(tds.vertices().capacity() >= n, prepared);
-    EXPECT_EQ(tds.faces().size(), prepared ? faces : 0u);
-    EXPECT_EQ(made.size(), prepared ? faces : 0u);
-    if(prepared) {
-      // the k-th face made is the k-th of the container, and empty
-      std::size_t k = 0;
-      for(auto f = tds.faces().begin(); f != tds.faces().end(); ++f, ++k) {
-        EXPECT_EQ(made[k], Tds::Face_handle(f));
-        EXPECT_EQ(f->vertex(0), Tds::Vertex_handle());
-      }
-    }
-  }
-}
-
-TEST(Internals, CreationOrderHandlesFindEveryElementByRank)
-{
-  // Elements made in a container with holes (runs of one element, in the
-  // free list's order) and then in fresh blocks (long runs).
-  typedef CGAL::Penrose_Delaunay_triangulation_2<Epick>::Triangulation_data_structure Tds;
-  typedef CGAL::internal::Penrose::Creation_order_handles<Tds::Face_range> Handles;
-  Tds tds;
-  std::vector<Tds::Face_handle> early;
-  for(int i = 0; i < 3000; ++i) early.push_back(tds.create_face());
-  for(std::size_t i = 0; i < early.size(); i += 3) tds.delete_face(early[i]);
-  Handles made;
-  std::vector<Tds::Face_handle> expected;
-  for(int i = 0; i < 20000; ++i) {
-    expected.push_back(tds.create_face());
-    made.record(expected.back());
-  }
-  made.index();
-  ASSERT_EQ(made.size(), expected.size());
-  for(std::size_t k = 0; k < expected.size(); ++k) ASSERT_EQ(made[k], expected[k]) << k;
-}
-
-TEST(Internals, FastPredicatesNeverContradictEpick)
-{
-  // Near-degenerate configurations at every scale: four points rounded onto a
-  // circle, three onto a line, then nudged by a few ulps. The filters may
-  // leave a case undecided (ZERO), never decide it wrongly, and must decide
-  // the generic ones.
-  using namespace CGAL::internal::Penrose;
-  CGAL::Random rng(20261122);
-  const Epick::Orientation_2 orientation;
-  const Epick::Side_of_oriented_circle_2 side_of_oriented_circle;
-  auto nudge = [&rng](double v) {
-    for(int k = rng.get_int(-3, 4); k != 0; k += (k < 0 ? 1 : -1))
-      v = std::nextafter(v, k < 0 ? -HUGE_VAL : HUGE_VAL);
-    return v;
-  };
-  std::size_t wrong = 0, generic = 0, generic_decided = 0, degenerate_decided = 0;
-  for(int trial = 0; trial < 200000; ++trial) {
-    const double scale = std::ldexp(1., rng.get_int(-700, 700));
-    const double offset = (trial % 3 == 0) ? 0. : scale * std::ldexp(1., rng.get_int(0, 40));
-    const double cx = offset + scale * rng.get_double(-1, 1), cy = offset + scale * rng.get_double(-1, 1);
-    const double r = scale * rng.get_double(0.01, 1);
-    const bool degenerate = trial % 2 == 0;
-    std::array<Point, 4> q;
-    for(int i = 0; i < 4; ++i) {
-      const double a = rng.get_double(0, 6.283185307179586);
-      const double x = cx + r * std::cos(a), y = cy + r * std::sin(a);
-      q[i] = degenerate ? Point(nudge(x), nudge(y)) : Point(cx + scale * rng.get_double(-1, 1), cy + scale * rng.get_double(-1, 1));
-    }
-    if(degenerate && trial % 4 == 0)  // the third point on the line of the first two
-      q[2] = Point(nudge(q[0].x() + 0.375 * (q[1].x() - q[0].x())), nudge(q[0].y() + 0.375 * (q[1].y() - q[0].y())));
-    const CGAL::Sign o = filtered_orientation(q[0].x(), q[0].y(), q[1].x(), q[1].y(), q[2].x(), q[2].y());
-    wrong += o != CGAL::ZERO && o != orientation(q[0], q[1], q[2]);
-    if(orientation(q[0], q[1], q[2]) != CGAL::POSITIVE) std::swap(q[0], q[1]);
-    const CGAL::Sign s = filtered_in_circle(q[0].x(), q[0].y(), q[1].x(), q[1].y(), q[2].x(), q[2].y(), q[3].x(), q[3].y());
-    wrong += s != CGAL::ZERO && s != CGAL::Sign(side_of_oriented_circle(q[0], q[1], q[2], q[3]));
-    const bool in_range = std::abs(scale) > 1e-40 && std::abs(offset) + scale < 1e60;
-    if(!degenerate && in_range) {
-      ++generic;
-      generic_decided += (o != CGAL::ZERO) + (s != CGAL::ZERO);
-    }
-    if(degenerate) degenerate_decided += (s != CGAL::ZERO);
-  }
-  EXPECT_EQ(wrong, 0u);
-  EXPECT_GT(double(generic_decided), 0.99 * 2. * double(generic));
-  EXPECT_GT(generic, 10000u);
-  std::cout << "fast predicates: " << generic_decided << " of " << 2 * generic << " generic tests decided, "
-            << degenerate_decided << " of 100000 near-cocircular ones\n";
 }
 
 TEST(Triangulation, RandomSmoothDensitiesMatchCgal)
@@ -684,19 +454,6 @@ TEST(Triangulation, WithoutCorrectionCocircularPointsMatchCgal)
 
 TEST(Triangulation, RefusesWhatCannotFit)
 {
-  using CGAL::internal::Penrose::check_construction_size;
-  const double gib = double(1 << 30);
-  EXPECT_THROW(check_construction_size(1e7, 200., 1. * gib), std::length_error);
-  EXPECT_NO_THROW(check_construction_size(1e7, 200., 4. * gib));
-  EXPECT_NO_THROW(check_construction_size(1e7, 200., 0.));  // memory unknown
-  EXPECT_THROW(check_construction_size(2e9, 200., 0.), std::length_error);  // 32-bit indices
-  EXPECT_NO_THROW(check_construction_size(1.5e9, 200., 0.));
-  using CGAL::internal::Penrose::check_growth;
-  EXPECT_THROW(check_growth(1e6, 2e6, 500., 0.25 * gib, "", "", ""), std::length_error);
-  EXPECT_NO_THROW(check_growth(1e6, 2e6, 500., 1. * gib, "", "", ""));
-  EXPECT_NO_THROW(check_growth(1e6, 2e6, 500., 0., "", "", ""));  // memory unknown
-  EXPECT_THROW(check_growth(2e6, 2e6, 0., 0., "", "", ""), std::length_error);
-
   // 10^10 points: refused before any allocation, the triangulation untouched
   CGAL::Penrose_Delaunay_triangulation_2<Epick> pdt(
     Sampler(unit_square, [](const Point&) { return 1.; }, CGAL::parameters::number_of_output_points(500)));
@@ -712,42 +469,6 @@ TEST(Triangulation, RefusesWhatCannotFit)
   }
   EXPECT_TRUE(pdt.is_valid());
   EXPECT_TRUE(edge_set(pdt, xy_of) == before);
-}
-
-TEST(Internals, BaseMeshThatWouldOutgrowMemoryIsRefusedBeforeItGrows)
-{
-  // a density bound 64 times the density refines tiles that hold no point,
-  // and the mesh outgrows what was reserved for the points: a builder
-  // allowed 64 MiB refuses to grow it past them, with its
-  // helper thread and without (2^16 points and up), and a mesh that stays
-  // within what was reserved is not refused
-  using CGAL::internal::Penrose::Base_triangulation_builder;
-  using CGAL::internal::Penrose::Flat_mesh;
-  using CGAL::internal::Penrose::Sampler_access;
-  const double budget = 64. * (1 << 20);
-  auto one = [](const Point&) { return 1.; };
-  auto loose = [](const Epick::Iso_rectangle_2&) { return 64.; };
-  for(std::size_t n : {std::size_t(20000), std::size_t(100000)}) {
-    const Sampler s(unit_square, one,
-                    CGAL::parameters::density_upper_bound(loose, CGAL::parameters::number_of_output_points(n)));
-    Flat_mesh mesh;
-    Base_triangulation_builder builder(Sampler_access::context(s), mesh, false, budget);
-    std::string message = "not refused";
-    try {
-      builder.build(s.expected_number_of_points(), std::function<bool(double)>());
-    } catch(const std::length_error& e) {
-      message = e.what();
-    }
-    EXPECT_NE(message.find("the base mesh would grow to about"), std::string::npos) << n << ": " << message;
-    EXPECT_NE(message.find("GiB of this machine"), std::string::npos) << n << ": " << message;
-    EXPECT_LT(520. * double(mesh.points.size()), budget) << n;
-
-    const Sampler tight(unit_square, one, CGAL::parameters::number_of_output_points(n));
-    Flat_mesh fitting;
-    EXPECT_TRUE(Base_triangulation_builder(Sampler_access::context(tight), fitting, false, budget)
-                  .build(tight.expected_number_of_points(), std::function<bool(double)>())) << n;
-    EXPECT_GT(fitting.points.size(), n / 2) << n;
-  }
 }
 
 TEST(Triangulation, FewPointsHaveCgalsDimension)
@@ -858,29 +579,6 @@ TEST(Triangulation, CallbackReportsAdvancementAndStops)
 }
 
 namespace {
-template <class K>
-void expect_kernel_matches(const std::string& name)
-{
-  typedef typename K::Point_2 P;
-  const CGAL::Penrose_importance_sampler<K> s(typename K::Iso_rectangle_2(P(0, 0), P(2, 1)),
-    [](const P& p) { return 1. + CGAL::to_double(p.x()); }, CGAL::parameters::number_of_output_points(3000));
-  const CGAL::Penrose_Delaunay_triangulation_2<K> pdt(s);
-  ASSERT_TRUE(pdt.is_valid()) << name;
-  std::vector<P> points;
-  s(std::back_inserter(points));
-  const CGAL::Delaunay_triangulation_2<K> dt(points.begin(), points.end());
-  auto xy = [](const P& p) { return std::make_pair(CGAL::to_double(p.x()), CGAL::to_double(p.y())); };
-  EXPECT_TRUE(edge_set(pdt, xy) == edge_set(dt, xy)) << name;
-}
-} // namespace
-
-TEST(Traits, EpeckAndGmpqMatchCgal)
-{
-  expect_kernel_matches<CGAL::Exact_predicates_exact_constructions_kernel>("Epeck");
-  expect_kernel_matches<CGAL::Simple_cartesian<CGAL::Gmpq>>("Simple_cartesian<Gmpq>");
-}
-
-namespace {
 template <class Gt, class Lift, class XY>
 void expect_traits_match(const Sampler& s, const Lift& lift, const XY& xy, const std::string& what)
 {
@@ -952,4 +650,149 @@ TEST(Traits, VertexBaseWithTileInformation)
   ASSERT_EQ(pdt.number_of_vertices(), expected.size());
   for(auto v = pdt.finite_vertices_begin(); v != pdt.finite_vertices_end(); ++v)
     EXPECT_EQ(v->info(), expected.at(xy_of(v->point())));
+}
+
+namespace {
+
+// The sampler's traits for the triangulation's: the same where they are a
+// kernel, Epick where they have no rectangle (the projection traits).
+template <class Gt, class = void> struct Sampler_traits_of { typedef Epick type; };
+template <class Gt> struct Sampler_traits_of<Gt, std::void_t<typename Gt::Iso_rectangle_2>> { typedef Gt type; };
+
+// Everything the triangulation promises, for the traits Gt and the TDS Tds
+// (CGAL::Default for the default one), its points made by `lift`: the
+// triangulation of CGAL, on `n` points of a ramp and on degenerate inputs
+// (raw tile vertices, with cocircular and collinear subsets; 0 to 3 points),
+// the visitor, copies and swaps, a callback that stops, edits, a bad density.
+template <class Gt, class Tds, class Lift>
+void test_triangulation(const Lift& lift, std::size_t n, const std::string& name)
+{
+  typedef CGAL::Penrose_Delaunay_triangulation_2<Gt, Tds> Pdt;
+  typedef typename Sampler_traits_of<Gt>::type K;
+  typedef CGAL::Penrose_importance_sampler<K> S;
+  typedef typename K::Point_2 P;
+  auto x_of = [](const P& p) { return CGAL::to_double(K().compute_x_2_object()(p)); };
+  auto xy = [](const typename Gt::Point_2& p) { return std::make_pair(CGAL::to_double(p.x()), CGAL::to_double(p.y())); };
+  auto no_visitor = [](typename Pdt::Vertex_handle, const typename S::Sample&) {};
+  const typename K::Iso_rectangle_2 region(P(0, 0), P(2, 1));
+  auto ramp = [x_of](const P& p) { return 1. + x_of(p); };
+  const S s(region, ramp, CGAL::parameters::number_of_output_points(n));
+
+  const Pdt pdt(s, lift);
+  std::vector<P> sampled;
+  expect_matches_cgal(pdt, s, lift, xy, name, &sampled);
+  EXPECT_GT(sampled.size(), n / 2) << name;
+  EXPECT_GT(pdt.number_of_flips(), 0u) << name;
+  EXPECT_LE(double(pdt.number_of_fallbacks()), 0.001 * double(sampled.size()) + 0.5) << name;
+
+  // the visitor sees each vertex once, with the sample it comes from
+  Pdt visited;
+  std::size_t visits = 0, wrong = 0;
+  ASSERT_TRUE(visited.build(s, lift, [&](typename Pdt::Vertex_handle v, const typename S::Sample& q) {
+    ++visits;
+    wrong += xy(v->point()) != std::make_pair(x_of(q.point), CGAL::to_double(K().compute_y_2_object()(q.point)));
+  })) << name;
+  EXPECT_EQ(visits, visited.number_of_vertices()) << name;
+  EXPECT_EQ(wrong, 0u) << name;
+  EXPECT_TRUE(edge_set(visited, xy) == edge_set(pdt, xy)) << name;
+
+  // copies and swaps carry the statistics
+  Pdt copy(pdt), other;
+  other.swap(copy);
+  EXPECT_EQ(copy.number_of_vertices(), 0u) << name;
+  EXPECT_EQ(copy.number_of_flips(), 0u) << name;
+  EXPECT_TRUE(other.is_valid()) << name;
+  EXPECT_TRUE(edge_set(other, xy) == edge_set(pdt, xy)) << name;
+  EXPECT_EQ(other.number_of_flips(), pdt.number_of_flips()) << name;
+  EXPECT_EQ(other.construction_statistics().base_vertices, pdt.construction_statistics().base_vertices) << name;
+
+  // a callback that stops the construction leaves it empty, valid and usable
+  const std::function<bool(double)> stop = [](double a) { return a < 0.7; };
+  EXPECT_FALSE(other.build(s, lift, no_visitor, CGAL::parameters::callback(stop))) << name;
+  EXPECT_EQ(other.number_of_vertices(), 0u) << name;
+  EXPECT_TRUE(other.is_valid()) << name;
+  other.insert(lift(0.5, 0.5));
+  EXPECT_EQ(other.number_of_vertices(), 1u) << name;
+
+  // degenerate inputs
+  const S raw(region, [](const P&) { return 1.; },
+              CGAL::parameters::use_correction_vectors(false).number_of_output_points(n));
+  expect_matches_cgal(Pdt(raw, lift), raw, lift, xy, name + ", no correction");
+  std::set<std::size_t> seen;
+  for(int k = 0; k < 30; ++k) {
+    const S few(region, ramp, CGAL::parameters::density_control_factor(0.02 * std::pow(1.15, k)));
+    std::vector<P> points;
+    const Pdt t(few, lift);
+    expect_matches_cgal(t, few, lift, xy, name + ", few points " + std::to_string(k), &points);
+    seen.insert(points.size());
+    EXPECT_EQ(t.dimension(), int((std::min)(points.size(), std::size_t(3))) - 1) << name << ", few points " << k;
+  }
+  EXPECT_TRUE(seen.count(0) && seen.count(1) && seen.count(2) && seen.count(3)) << name;
+
+  // inserting and removing keep it the Delaunay triangulation of its vertices
+  Pdt edited(s, lift);
+  CGAL::Random r(7);
+  for(int i = 0; i < 50; ++i) edited.insert(lift(r.get_double(-0.2, 2.2), r.get_double(-0.2, 1.2)));
+  std::vector<typename Pdt::Vertex_handle> to_remove;
+  for(auto v = edited.finite_vertices_begin(); v != edited.finite_vertices_end() && to_remove.size() < 30; ++v)
+    if(r.get_int(0, 10) == 0) to_remove.push_back(v);
+  for(auto v : to_remove) edited.remove(v);
+  EXPECT_TRUE(edited.is_valid()) << name << ": after edits";
+  std::vector<typename Gt::Point_2> rest;
+  for(auto v = edited.finite_vertices_begin(); v != edited.finite_vertices_end(); ++v) rest.push_back(v->point());
+  EXPECT_EQ(rest.size(), sampled.size() + 50 - to_remove.size()) << name;
+  const CGAL::Delaunay_triangulation_2<Gt> dt(rest.begin(), rest.end());
+  EXPECT_TRUE(edge_set(edited, xy) == edge_set(dt, xy)) << name << ": edges differ after edits";
+
+  // a density that turns bad partway through throws the sampler's error and leaves it empty
+  std::size_t calls = 0, good_calls = std::numeric_limits<std::size_t>::max();
+  const S bad(region, [&](const P& p) { return ++calls > good_calls ? -1. : ramp(p); },
+              CGAL::parameters::number_of_output_points(n));
+  good_calls = calls + 10;
+  Pdt refused(s, lift);
+  EXPECT_THROW(refused.build(bad, lift), std::invalid_argument) << name;
+  EXPECT_EQ(refused.number_of_vertices(), 0u) << name;
+  EXPECT_TRUE(refused.is_valid()) << name;
+
+  // from a region and a density, where the traits have a rectangle
+  if constexpr(std::is_same<K, Gt>::value) {
+    const Pdt from_region(region, ramp, CGAL::parameters::number_of_output_points(n));
+    EXPECT_TRUE(edge_set(from_region, xy) == edge_set(pdt, xy)) << name;
+  }
+}
+
+template <class K>
+typename K::Point_2 planar(double x, double y) { return typename K::Point_2(x, y); }
+
+} // namespace
+
+TEST(Traits, TriangulationDriverOverEpick)
+{
+  test_triangulation<Epick, CGAL::Default>(planar<Epick>, 3000, "Epick");
+}
+
+// the sizes of Traits.EpeckAndGmpqMatchCgal, which this driver replaced
+TEST(Traits, TriangulationDriverOverEpeck)
+{
+  typedef CGAL::Exact_predicates_exact_constructions_kernel Epeck;
+  test_triangulation<Epeck, CGAL::Default>(planar<Epeck>, 3000, "Epeck");
+}
+
+TEST(Traits, TriangulationDriverOverGmpq)
+{
+  typedef CGAL::Simple_cartesian<CGAL::Gmpq> Gmpq_kernel;
+  test_triangulation<Gmpq_kernel, CGAL::Default>(planar<Gmpq_kernel>, 3000, "Simple_cartesian<Gmpq>");
+}
+
+TEST(Traits, TriangulationDriverOverProjectionTraitsXy3)
+{
+  test_triangulation<CGAL::Projection_traits_xy_3<Epick>, CGAL::Default>(
+    [](double x, double y) { return Epick::Point_3(x, y, x * x - y); }, 2000, "Projection_traits_xy_3<Epick>");
+}
+
+TEST(Traits, TriangulationDriverOverAVertexBaseWithInfo)
+{
+  typedef CGAL::Triangulation_data_structure_2<CGAL::Triangulation_vertex_base_with_info_2<int, Epick>,
+                                               CGAL::Triangulation_face_base_2<Epick>> Tds;
+  test_triangulation<Epick, Tds>(planar<Epick>, 1000, "Epick, a vertex base with info");
 }

@@ -1,29 +1,29 @@
 // Copyright (c) 2026 The Penrose_Delaunay_triangulation_2 authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Properties of Penrose_importance_sampler and Penrose_tile_tree, each
-// checked against an independent expectation: geometry of the tiles, the
-// Fibonacci codes, point counts against the integral of the density, spacing
-// against the packing distance, coverage, determinism and input checks.
+// Properties of Penrose_importance_sampler and Raster_density_2, each
+// checked against an independent expectation: point counts against the
+// integral of the density, spacing against the packing distance, coverage,
+// determinism and input checks; and test_sampler<K>(), what the sampler
+// promises for any kernel K, run over Epick, Epeck and Simple_cartesian<Gmpq>.
 
 #include <CGAL/Penrose_importance_sampler.h>
-#include <CGAL/Penrose_tile_tree.h>
 #include <CGAL/Raster_density_2.h>
 #include "point_set_quality.h"
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Gmpq.h>
 #include <CGAL/Simple_cartesian.h>
 
-#include <boost/iterator/function_output_iterator.hpp>
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <limits>
 #include <random>
-#include <set>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -47,172 +47,7 @@ std::vector<Point> constant_sample(double n, bool correct = true)
   return p;
 }
 
-double triangle_area(const CGAL::Penrose_tile_tree& tree, CGAL::Penrose_tile_tree::Index t)
-{
-  const auto& tile = tree.tile(t);
-  const auto& a = tree.vertex(tile.vertices[0]);
-  const auto& b = tree.vertex(tile.vertices[1]);
-  const auto& c = tree.vertex(tile.vertices[2]);
-  return 0.5 * ((b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y));
-}
-
-// Separating axis test with a tolerance: true if the interiors overlap by more than eps.
-bool interiors_overlap(const CGAL::Penrose_tile_tree& tree, CGAL::Penrose_tile_tree::Index s,
-                       CGAL::Penrose_tile_tree::Index t, double eps)
-{
-  const CGAL::Penrose_tile_tree::Index tiles[2] = {s, t};
-  for(int k = 0; k < 2; ++k)
-    for(int e = 0; e < 3; ++e) {
-      const auto& a = tree.vertex(tree.tile(tiles[k]).vertices[e]);
-      const auto& b = tree.vertex(tree.tile(tiles[k]).vertices[(e + 1) % 3]);
-      const double nx = b.y - a.y, ny = a.x - b.x; // outward normal of a ccw edge
-      double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
-      for(int m = 0; m < 2; ++m)
-        for(int i = 0; i < 3; ++i) {
-          const auto& v = tree.vertex(tree.tile(tiles[m]).vertices[i]);
-          const double d = nx * (v.x - a.x) + ny * (v.y - a.y);
-          lo[m] = std::min(lo[m], d); hi[m] = std::max(hi[m], d);
-        }
-      const double len = std::hypot(nx, ny);
-      if(hi[0] <= lo[1] + eps * len || hi[1] <= lo[0] + eps * len) return false;
-    }
-  return true;
-}
-
-CGAL::Penrose_tile_tree constant_tree(double n)
-{
-  return Sampler(unit_square, [](const Point&) { return 1.; },
-                 CGAL::parameters::number_of_output_points(std::size_t(n))).tile_tree();
-}
-
 } // namespace
-
-TEST(Tiles, ChildrenCoverTheirParentExactly)
-{
-  const CGAL::Penrose_tile_tree tree = constant_tree(3000);
-  std::size_t subdivided = 0;
-  for(CGAL::Penrose_tile_tree::Index t = 0; t < tree.tiles().size(); ++t) {
-    if(tree.is_leaf(t)) continue;
-    ++subdivided;
-    const double area = triangle_area(tree, t);
-    ASSERT_GT(area, 0.);
-    double sum = 0.;
-    const int n = tree.tile(t).number_of_children;
-    for(int c = 0; c < n; ++c) {
-      const double a = triangle_area(tree, tree.child(t, c));
-      ASSERT_GT(a, 0.) << "child " << c << " of tile " << t << " is not counter-clockwise";
-      sum += a;
-      for(int c2 = c + 1; c2 < n; ++c2)
-        ASSERT_FALSE(interiors_overlap(tree, tree.child(t, c), tree.child(t, c2), 1e-9 * std::sqrt(area)))
-          << "children " << c << " and " << c2 << " of tile " << t << " overlap";
-    }
-    ASSERT_NEAR(sum, area, 1e-12 * area + 1e-15);
-  }
-  EXPECT_GT(subdivided, 1000u);
-}
-
-TEST(Tiles, NeighboursShareTheirEdge)
-{
-  const CGAL::Penrose_tile_tree tree = constant_tree(3000);
-  std::size_t same_level = 0, coarser = 0;
-  for(CGAL::Penrose_tile_tree::Index t = 0; t < tree.tiles().size(); ++t)
-    for(int e = 0; e < 3; ++e) {
-      const auto n = tree.neighbor(t, e);
-      if(n == CGAL::Penrose_tile_tree::null_index) continue;
-      const auto& tt = tree.tile(t);
-      const auto& tn = tree.tile(n);
-      ASSERT_LE(tn.level, tt.level);
-      const auto& a = tree.vertex(tt.vertices[e]);
-      const auto& b = tree.vertex(tt.vertices[(e + 1) % 3]);
-      if(tn.level == tt.level) {
-        ++same_level;
-        const int f = tree.facing_edge(n, t);
-        EXPECT_EQ(tn.vertices[f], tt.vertices[(e + 1) % 3]);
-        EXPECT_EQ(tn.vertices[(f + 1) % 3], tt.vertices[e]);
-      } else {
-        ++coarser;
-        // the edge lies on an edge of the coarser tile
-        bool on_some_edge = false;
-        for(int f = 0; f < 3; ++f) {
-          const auto& c = tree.vertex(tn.vertices[f]);
-          const auto& d = tree.vertex(tn.vertices[(f + 1) % 3]);
-          const double l = std::hypot(d.x - c.x, d.y - c.y);
-          const double da = ((d.x - c.x) * (a.y - c.y) - (d.y - c.y) * (a.x - c.x)) / l;
-          const double db = ((d.x - c.x) * (b.y - c.y) - (d.y - c.y) * (b.x - c.x)) / l;
-          if(std::abs(da) < 1e-12 && std::abs(db) < 1e-12) on_some_edge = true;
-        }
-        EXPECT_TRUE(on_some_edge);
-      }
-    }
-  EXPECT_GT(same_level, 1000u);
-  EXPECT_GT(coarser, 0u); // the region's border makes the tree adaptive
-}
-
-TEST(Tiles, FCodesAreZeckendorfAndThresholdsDistinct)
-{
-  const CGAL::Penrose_tile_tree tree = constant_tree(5000);
-  for(const auto& t : tree.tiles()) ASSERT_EQ(t.f_code & (t.f_code >> 1), 0u);
-  // All sample vertices are A/B tiles of the deepest level: their thresholds
-  // must differ, and equal the Fibonacci reading of their codes.
-  std::set<std::uint64_t> thresholds;
-  std::size_t samples = 0;
-  for(const auto& v : tree.vertices()) {
-    if(!v.is_sample) continue;
-    ++samples;
-    ASSERT_EQ(v.birth.code & (v.birth.code >> 1), 0u);
-    std::uint64_t f = 0;
-    const int bits = 2 * v.birth.level;
-    for(int b = 0; b < bits; ++b)
-      if(v.birth.code >> b & 1u) f += CGAL::internal::Penrose::fibonacci().fib[bits + 1 - b];
-    ASSERT_EQ(f, v.birth.threshold);
-    thresholds.insert(v.birth.threshold);
-  }
-  EXPECT_GT(samples, 5000u);
-  EXPECT_EQ(thresholds.size(), samples);
-}
-
-// The importance index (the correction table's row) is the step of
-// log_{phi^2}(1 + sqrt(5) i) within its level: checked against that
-// logarithm in long double, away from the steps' bounds, where rounding
-// decides.
-TEST(Tiles, ImportanceBinsFollowTheLogarithm)
-{
-  const long double log_phi2 = std::log(static_cast<long double>(CGAL::internal::Penrose::golden_ratio) *
-                                        static_cast<long double>(CGAL::internal::Penrose::golden_ratio));
-  std::mt19937_64 random(7);
-  std::uniform_real_distribution<double> exponent(-4., 12.5);  // up to the deepest level
-  for(unsigned bins : {1u, 5u, 21u, 64u}) {
-    const CGAL::internal::Penrose::Importance_bins index(bins);
-    std::size_t checked = 0;
-    for(int k = 0; k < 200000; ++k) {
-      const double i = std::pow(10., exponent(random));
-      const long double steps = std::log1p(std::sqrt(5.L) * i) / log_phi2 * bins;
-      const long double within = steps - std::floor(steps);
-      if(within < 1e-9L || within > 1. - 1e-9L) continue;
-      ASSERT_EQ(index(i), static_cast<unsigned>(static_cast<unsigned long long>(std::floor(steps)) % bins)) << i;
-      ++checked;
-    }
-    EXPECT_GT(checked, 199000u);
-    EXPECT_EQ(index(0.), 0u);
-  }
-}
-
-TEST(Tiles, TreeAndStreamingSamplerAgreeBitForBit)
-{
-  Sampler s(unit_square, [](const Point& p) { return 1. + 3. * p.x() * p.y(); },
-            CGAL::parameters::number_of_output_points(20000));
-  std::vector<std::pair<double, double>> a, b;
-  s.samples(boost::make_function_output_iterator([&](const Sampler::Sample& q) {
-    a.emplace_back(q.point.x(), q.point.y());
-  }));
-  s.tile_tree().for_each_sample([&](CGAL::Penrose_tile_tree::Index, const CGAL::internal::Penrose::Placed_sample& q) {
-    b.emplace_back(q.x, q.y);
-  });
-  std::sort(a.begin(), a.end());
-  std::sort(b.begin(), b.end());
-  ASSERT_EQ(a.size(), b.size());
-  EXPECT_TRUE(a == b);
-}
 
 TEST(Density, ConstantCountMatchesTheIntegral)
 {
@@ -548,95 +383,24 @@ TEST(Raster, UpperBoundCoversEveryBox)
   }
 }
 
-TEST(Sampler, ThresholdPruningDropsNoActiveSample)
+TEST(Raster, UpperBoundFunctionOutlivesTheDensity)
 {
-  // Any valid bound gives the exact set of active samples. The loosest one
-  // (the global maximum) subdivides every tile whose subtree has a threshold
-  // under it; a tight one prunes far more, and must lose nothing.
-  auto density = [](const Point& p) {
-    const double dx = p.x() - 0.3, dy = p.y() - 0.6;
-    return 1.2 + std::sin(37. * p.x()) * std::cos(29. * p.y()) + 3. * std::exp(-(dx * dx + dy * dy) / 0.004);
-  };
-  const double global_max = 5.2, lipschitz = 37. + 29. + 3. * 2. / std::sqrt(2. * 0.004) * std::exp(-0.5);
-  auto tight = [&](const Epick::Iso_rectangle_2& b) {
-    const Point c((b.xmin() + b.xmax()) / 2., (b.ymin() + b.ymax()) / 2.);
-    const double reach = std::hypot(b.xmax() - b.xmin(), b.ymax() - b.ymin()) / 2.;
-    return std::min(global_max, density(c) + lipschitz * reach);
-  };
-  auto loose = [&](const Epick::Iso_rectangle_2&) { return global_max; };
-  for(std::size_t n : {300, 3000, 20000}) {
-    const Sampler with_tight(unit_square, density,
-                             CGAL::parameters::density_upper_bound(tight).number_of_output_points(n));
-    const Sampler with_loose(unit_square, density,
-                             CGAL::parameters::density_upper_bound(loose).number_of_output_points(n));
-    std::vector<Point> a, b;
-    with_tight(std::back_inserter(a));
-    with_loose(std::back_inserter(b));
-    EXPECT_EQ(a, b) << n << " points";
-    EXPECT_LT(with_tight.tile_tree().tiles().size(), with_loose.tile_tree().tiles().size());
+  // the function holds its own copy, which shares the pyramid: it gives the
+  // same bounds once the density and its copies are destroyed
+  std::vector<double> v(40 * 30);
+  for(std::size_t k = 0; k < v.size(); ++k) v[k] = double((k * 7919) % 101);
+  std::function<double(const Epick::Iso_rectangle_2&)> bound;
+  std::vector<double> expected;
+  const std::vector<Epick::Iso_rectangle_2> boxes = {Epick::Iso_rectangle_2(0, 0, 1, 1), Epick::Iso_rectangle_2(0.1, 0.2, 0.15, 0.3),
+                                                     Epick::Iso_rectangle_2(0.7, 0.7, 0.71, 0.72)};
+  {
+    const CGAL::Raster_density_2<Epick> d(40, 30, v, unit_square);
+    const CGAL::Raster_density_2<Epick> copy = d;
+    bound = copy.upper_bound_function();
+    for(const auto& b : boxes) expected.push_back(d.upper_bound(b));
   }
-}
-
-TEST(Sampler, RegionPruningDropsNoSample)
-{
-  // A tile beyond the region's margin is not subdivided. No sample that its
-  // subtree could hold may land in the region: born anywhere in the tile at
-  // the next level or deeper, with the F-code of a random path down the
-  // rules, any direction, and an importance that keeps its leaf at its birth
-  // level (the largest moves), moved by the real correction table. The tiles
-  // tried lie beside the region at 0.95 to 1.25 of their size, and the
-  // samples near their corner nearest to it, where a margin too thin would
-  // show: a margin 5% thinner lets 4 of the 1.9 million samples in.
-  using namespace CGAL::internal::Penrose;
-  const Sampler sampler(unit_square, [](const Point&) { return 1.; }, CGAL::parameters::number_of_output_points(1000));
-  const Sampling_context& c = Sampler_access::context(sampler);
-  ASSERT_NE(c.correction_table(), nullptr);
-  std::mt19937_64 rng(20261122);
-  std::uniform_real_distribution<double> u(0., 1.);
-  const auto& li = fibonacci().level_importance;
-  auto sample_code = [&rng](int birth_level) {
-    for(;;) {
-      Tile_type type = FAT_F;  // the root's
-      std::uint64_t code = 0;
-      for(int l = 1; l < birth_level; ++l) {
-        const Child_rule& child = rule(type).children[rng() % rule(type).number_of_children];
-        code = code * 4 + child.code_pair;
-        type = child.type;
-      }
-      const Subdivision_rule& r = rule(type);
-      for(int n = 0; n < r.number_of_new_vertices; ++n)
-        if(r.new_vertices[n].is_sample) return code * 4 + r.sample_code_pair;
-    }
-  };
-  std::size_t pruned = 0, samples = 0, inside = 0;
-  for(int trial = 0; trial < 20000; ++trial) {
-    const int level = 1 + trial % 14;
-    const double s = c.scale(level), gap = s * (0.95 + 0.3 * u(rng)), along = u(rng);
-    // left of the region, then mirrored or turned onto the other three sides
-    double x[3] = {-gap, -gap - 0.8 * s, -gap - 0.4 * s}, y[3] = {along, along + 0.3 * s, along - 0.6 * s};
-    for(int i = 0; i < 3; ++i) {
-      if(trial % 2 == 1) x[i] = 1. - x[i];
-      if(trial % 4 >= 2) std::swap(x[i], y[i]);
-    }
-    const double reach = double(fibonacci().fib[2 * level + 2]);
-    const double importance[3] = {reach, reach, reach};  // the importance alone would subdivide it
-    if(c.should_refine(level, 0, x, y, importance)) continue;
-    ++pruned;
-    for(int k = 0; k < 100; ++k) {
-      const double a = 0.05 * u(rng), b = 0.05 * u(rng);
-      const double px = x[0] + a * (x[1] - x[0]) + b * (x[2] - x[0]), py = y[0] + a * (y[1] - y[0]) + b * (y[2] - y[0]);
-      const int birth_level = (std::min)(max_level, level + 1 + int(rng() % 3));
-      const double lo = li[birth_level], hi = li[birth_level + 1];
-      const Sample_birth birth = {sample_code(birth_level), 0, std::uint8_t(birth_level), std::uint8_t(rng() % 20)};
-      Placed_sample placed;
-      ASSERT_TRUE(c.activate(px, py, lo + (hi - lo) * 0.999 * u(rng), birth, placed));
-      ASSERT_EQ(placed.leaf_level, birth_level);
-      ++samples;
-      inside += c.contains(placed.x, placed.y);
-    }
-  }
-  EXPECT_GT(pruned, 5000u);
-  EXPECT_EQ(inside, 0u) << "of " << samples << " samples of pruned tiles";
+  for(std::size_t k = 0; k < boxes.size(); ++k) EXPECT_EQ(bound(boxes[k]), expected[k]);
+  EXPECT_EQ(expected[0], 100. * (1. + 1e-14));
 }
 
 namespace {
@@ -692,3 +456,104 @@ TEST(Traits, EveryKernelGivesTheSamePoints)
   EXPECT_TRUE(epick == sc);
   EXPECT_TRUE(epick == minimal);
 }
+
+namespace {
+
+// Everything the sampler promises, for the kernel K: `n` points of a ramp
+// over a region that is not the unit square, the same as with Epick.
+template <class K>
+void test_sampler(std::size_t n, const std::string& name)
+{
+  typedef CGAL::Penrose_importance_sampler<K> S;
+  typedef typename K::Point_2 P;
+  typedef typename K::Iso_rectangle_2 R;
+  const K traits;
+  auto x_of = [&](const P& p) { return CGAL::to_double(traits.compute_x_2_object()(p)); };
+  auto y_of = [&](const P& p) { return CGAL::to_double(traits.compute_y_2_object()(p)); };
+  auto points_of = [](const S& s) {
+    std::vector<P> p;
+    s(std::back_inserter(p));
+    return p;
+  };
+  auto xy_of = [&](const std::vector<P>& p) {
+    std::vector<std::pair<double, double>> xy;
+    for(const P& q : p) xy.emplace_back(x_of(q), y_of(q));
+    return xy;
+  };
+  const R region(P(-1, 0.5), P(1, 1.5));
+  auto ramp = [&](const P& p) { return 1. + 4. * (x_of(p) + 1.); };
+  const S s(region, ramp, CGAL::parameters::number_of_output_points(n).geom_traits(traits));
+
+  // the count and the accessors
+  const std::vector<P> points = points_of(s);
+  EXPECT_NEAR(double(points.size()) / double(n), 1., 0.05) << name;
+  EXPECT_NEAR(s.expected_number_of_points(), double(n), 1e-6 * double(n)) << name;
+  EXPECT_NEAR(s.density_scale() * s.density_integral(), s.expected_number_of_points(), 1e-9 * double(n)) << name;
+  EXPECT_NEAR(s.density_integral(), 2. * (1. + 4.), 0.01) << name;  // the ramp's mean is 5 over an area of 2
+  EXPECT_TRUE(s.region() == region) << name;
+  EXPECT_TRUE(s.uses_correction_vectors()) << name;
+  for(const P& p : points)
+    ASSERT_TRUE(x_of(p) >= -1 && x_of(p) <= 1 && y_of(p) >= 0.5 && y_of(p) <= 1.5) << name;
+
+  // determinism, and the same points as with Epick
+  EXPECT_TRUE(xy_of(points_of(S(region, ramp, CGAL::parameters::number_of_output_points(n)))) == xy_of(points))
+    << name;
+  const CGAL::Penrose_importance_sampler<Epick> with_epick(
+    Epick::Iso_rectangle_2(-1, 0.5, 1, 1.5), [](const Point& p) { return 1. + 4. * (p.x() + 1.); },
+    CGAL::parameters::number_of_output_points(n));
+  std::vector<Point> epick_points;
+  with_epick(std::back_inserter(epick_points));
+  std::vector<std::pair<double, double>> epick_xy;
+  for(const Point& p : epick_points) epick_xy.emplace_back(p.x(), p.y());
+  EXPECT_TRUE(epick_xy == xy_of(points)) << name;
+
+  // samples(): the same points, in the same order, with their tiles' data
+  std::vector<typename S::Sample> samples;
+  s.samples(std::back_inserter(samples));
+  ASSERT_EQ(samples.size(), points.size()) << name;
+  for(std::size_t i = 0; i < samples.size(); ++i) {
+    ASSERT_TRUE(samples[i].point == points[i]) << name << ", sample " << i;
+    ASSERT_GT(samples[i].level, 0) << name;
+    ASSERT_GT(samples[i].importance, 0.) << name;
+    // the correction moves a point by less than its tile, itself under 1 / sqrt(density) in size
+    ASSERT_LT(std::hypot(x_of(samples[i].point) - x_of(samples[i].reference_point),
+                         y_of(samples[i].point) - y_of(samples[i].reference_point)),
+              3. / std::sqrt(s.density_scale() * ramp(samples[i].point))) << name << ", sample " << i;
+  }
+
+  // without correction: the tile vertices, about as many
+  const S raw(region, ramp, CGAL::parameters::use_correction_vectors(false).number_of_output_points(n));
+  EXPECT_FALSE(raw.uses_correction_vectors()) << name;
+  const std::vector<P> raw_points = points_of(raw);
+  EXPECT_NEAR(double(raw_points.size()) / double(n), 1., 0.05) << name;
+  EXPECT_FALSE(xy_of(raw_points) == xy_of(points)) << name;
+
+  // a raster density of K with its bound; any valid bound gives the same points
+  std::vector<double> pixels(16 * 8);
+  for(std::size_t k = 0; k < pixels.size(); ++k) pixels[k] = 1. + double(k % 16) + 0.5 * double(k / 16);
+  const CGAL::Raster_density_2<K> raster(16, 8, pixels, region);
+  const auto bounded = points_of(S(region, raster, CGAL::parameters::density_upper_bound(
+                                                     raster.upper_bound_function(), CGAL::parameters::number_of_output_points(n))));
+  const auto loosely_bounded = points_of(S(region, raster, CGAL::parameters::density_upper_bound(
+                                                             [](const R&) { return 20.; },
+                                                             CGAL::parameters::number_of_output_points(n))));
+  EXPECT_NEAR(double(bounded.size()) / double(n), 1., 0.05) << name;
+  EXPECT_TRUE(xy_of(bounded) == xy_of(loosely_bounded)) << name;
+
+  // what it throws
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW(points_of(S(region, [&](const P& p) { return x_of(p) > 0.5 ? nan : 1000.; })), std::invalid_argument)
+    << name;
+  EXPECT_THROW(S(R(P(0, 0), P(0, 1)), ramp), std::invalid_argument) << name;
+  EXPECT_THROW(S(region, ramp, CGAL::parameters::density_control_factor(-1.)), std::invalid_argument) << name;
+  EXPECT_THROW(S(region, ramp, CGAL::parameters::number_of_output_points(n).maximum_number(n / 2)), std::length_error)
+    << name;
+}
+
+} // namespace
+
+TEST(Traits, SamplerDriverOverEpick) { test_sampler<Epick>(20000, "Epick"); }
+
+TEST(Traits, SamplerDriverOverEpeck) { test_sampler<CGAL::Exact_predicates_exact_constructions_kernel>(2000, "Epeck"); }
+
+TEST(Traits, SamplerDriverOverGmpq) { test_sampler<CGAL::Simple_cartesian<CGAL::Gmpq>>(1000, "Simple_cartesian<Gmpq>"); }
