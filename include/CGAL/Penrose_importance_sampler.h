@@ -4,7 +4,6 @@
 #ifndef CGAL_PENROSE_IMPORTANCE_SAMPLER_H
 #define CGAL_PENROSE_IMPORTANCE_SAMPLER_H
 
-#include <CGAL/Penrose_tile_tree.h>
 #include <CGAL/Penrose_Delaunay_triangulation_2/named_parameters.h>
 #include <CGAL/Penrose_Delaunay_triangulation_2/internal/Depth_first_sampling.h>
 #include <CGAL/Penrose_Delaunay_triangulation_2/internal/Sampler_access.h>
@@ -44,27 +43,24 @@ count instead.
 The sampler is deterministic: the same region, density and parameters give
 the same points, bit for bit.
 
-Sampling (`operator()`, `samples()`, `tile_tree()` and the constructions of
+Sampling (`operator()`, `samples()` and the constructions of
 `Penrose_Delaunay_triangulation_2`) throws `std::invalid_argument`, naming
 the point and the value, where the density is negative, NaN or infinite,
 or where, scaled, it exceeds what the 30 levels of the tile tree can
 represent: about 4 x 10<sup>11</sup> / <i>L</i><sup>2</sup> points per unit area, <i>L</i>
 being the longer side of the region (about 4 x 10<sup>11</sup> points in
 a square region, <i>k</i> times fewer in a region <i>k</i> times longer than
-wide). `tile_tree()` throws `std::length_error` before its arrays would
-outgrow the machine's memory or their 32-bit indices, which a
-`density_upper_bound` far above the density can cause: it refines tiles
-that hold no point. To keep such a bound from running for minutes, sampling,
-`tile_tree()` and the constructions of `Penrose_Delaunay_triangulation_2`
-subdivide at most 256 tiles per expected point, plus 10<sup>5</sup>, and
-throw `std::length_error` beyond, as the tree grows: a tight bound, or none,
+wide). A `density_upper_bound` far above the density refines tiles that
+hold no point: to keep such a bound from running for minutes, sampling and
+the constructions of `Penrose_Delaunay_triangulation_2` subdivide at most
+256 tiles per expected point, plus 10<sup>5</sup>, and throw
+`std::length_error` beyond, as the tree grows: a tight bound, or none,
 subdivides 1.3 to 1.6 tiles per point, a bound 64 times the density about
 80, and one 10<sup>6</sup> times the density is refused within a second.
 
 \tparam Traits a model of `PenroseImportanceSamplerTraits_2`; the default is
 `Exact_predicates_inexact_constructions_kernel`, and every CGAL kernel is a model.
 
-\sa `Penrose_tile_tree`
 \sa `Penrose_Delaunay_triangulation_2`
 */
 template <class Traits = Exact_predicates_inexact_constructions_kernel>
@@ -226,6 +222,7 @@ public:
   /// @{
 
   /// Writes the sample points into `out`, in depth-first order of the tile tree.
+  /// \throws what sampling throws (see above).
   template <class OutputIterator>
   OutputIterator operator()(OutputIterator out) const
   {
@@ -237,18 +234,17 @@ public:
   }
 
   /// Writes the samples, with the data of their leaf tiles, into `out` (value type `Sample`).
+  /// \throws what sampling throws (see above).
   template <class OutputIterator>
   OutputIterator samples(OutputIterator out) const
   {
     for_each_placed([&](const internal::Penrose::Placed_sample& s) { *out++ = to_sample(s); });
     return out;
   }
-
-  /// Builds the tile tree breadth first, with shared vertices and neighbours.
-  Penrose_tile_tree tile_tree() const { return Penrose_tile_tree(*context_); }
   /// @}
 
   /// \name Access
+  /// None of these throws.
   /// @{
 
   /// The region sampled.

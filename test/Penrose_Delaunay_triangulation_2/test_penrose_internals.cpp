@@ -8,7 +8,7 @@
 // and the size checks.
 
 #include <CGAL/Penrose_Delaunay_triangulation_2.h>
-#include <CGAL/Penrose_tile_tree.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Tile_tree.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Random.h>
@@ -37,7 +37,6 @@ namespace {
 typedef CGAL::Exact_predicates_inexact_constructions_kernel Epick;
 typedef CGAL::Penrose_importance_sampler<Epick> Sampler;
 typedef Epick::Point_2 Point;
-typedef CGAL::Penrose_tile_tree Tile_tree;
 
 const Epick::Iso_rectangle_2 unit_square(0, 0, 1, 1);
 

@@ -1,8 +1,19 @@
 // Copyright (c) 2026 The Penrose_Delaunay_triangulation_2 authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The sampler's tile tree, built breadth first and stored in two contiguous
+// arrays: tiles, level after level, and vertices. Tiles sharing an edge share
+// its vertices, with the very doubles of the depth-first sampler, and each
+// tile knows the tile across each of its edges (at its own level, or a
+// coarser one), so the tree can be walked with no search. The tests check the
+// tiling on it (the geometry of the tiles, their neighbours, the F-codes, the
+// pruning) and its samples against the sampler's; the triangulation builds
+// its base mesh with Base_triangulation_builder instead, straight from the
+// rules. The point-like A and B tiles of the 2004 system are not stored: a
+// sample is a vertex flagged with the data of the A tile born there.
 
-#ifndef CGAL_PENROSE_TILE_TREE_H
-#define CGAL_PENROSE_TILE_TREE_H
+#ifndef CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_TILE_TREE_H
+#define CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_TILE_TREE_H
 
 #include <CGAL/Penrose_Delaunay_triangulation_2/internal/Sampling_context.h>
 #include <CGAL/Penrose_Delaunay_triangulation_2/internal/Size_limits.h>
@@ -16,97 +27,72 @@
 #include <vector>
 
 namespace CGAL {
+namespace internal {
+namespace Penrose {
 
-/*!
-\ingroup PkgPenroseDelaunayTriangulation2Ref
-
-The tile tree of a `Penrose_importance_sampler`, built breadth first and
-stored in two contiguous arrays: tiles, level after level, and vertices.
-
-Tiles sharing an edge share its vertices: a vertex is created once, by the
-first of the two tiles to split the edge, and its coordinates are the same
-double values that the depth-first sampler computes. Each tile knows the tile
-across each of its edges, at its own level where that tile exists and at a
-coarser level otherwise, so the tree can be walked with no search. This is the
-structure from which `Penrose_Delaunay_triangulation_2` derives its
-triangulation; it is advanced API.
-
-The point-like A and B tiles of the 2004 system are not stored: a sample is a
-vertex flagged with the data of the A tile born there.
-*/
-class Penrose_tile_tree
+class Tile_tree
 {
 public:
-  /// \name Types
-  /// @{
-
-  /// The index of a tile in `tiles()` or of a vertex in `vertices()`.
+  // The index of a tile in `tiles()` or of a vertex in `vertices()`.
   typedef std::uint32_t Index;
-  /// No tile: across the root's boundary.
+  // No tile: across the root's boundary.
   static constexpr Index null_index = 0xffffffffu;
-  /// The four triangular tile types of the 2004 system: two skinny (C, D) and two fat (E, F).
-  typedef internal::Penrose::Tile_type Tile_type;
-
-  /// A triangular tile.
+  // A triangular tile.
   struct Tile
   {
-    std::uint64_t f_code;            ///< the tile's F-code, its path from the root, two bits a level
-    std::array<Index, 3> vertices;   ///< counter-clockwise; edge i runs from vertex i to vertex i+1
-    std::array<Index, 3> neighbors;  ///< tile across edge i, or `null_index` on the root's boundary
-    Index first_child;               ///< children are consecutive
-    Tile_type type;                  ///< its type
-    std::uint8_t direction;          ///< its orientation, in steps of 18 degrees counter-clockwise from North
-    std::uint8_t level;              ///< its level, 0 for the root
-    std::uint8_t number_of_children; ///< 0 for a leaf
+    std::uint64_t f_code;            // the tile's F-code, its path from the root, two bits a level
+    std::array<Index, 3> vertices;   // counter-clockwise; edge i runs from vertex i to vertex i+1
+    std::array<Index, 3> neighbors;  // tile across edge i, or `null_index` on the root's boundary
+    Index first_child;               // children are consecutive
+    Tile_type type;                  // two skinny (C, D) and two fat (E, F)
+    std::uint8_t direction;          // its orientation, in steps of 18 degrees counter-clockwise from North
+    std::uint8_t level;              // its level, 0 for the root
+    std::uint8_t number_of_children; // 0 for a leaf
   };
 
-  /// A vertex of the tiles.
+  // A vertex of the tiles.
   struct Vertex
   {
-    double x;                               ///< abscissa, before any correction
-    double y;                               ///< ordinate, before any correction
-    double importance;                      ///< at the nearest point of the region
-    internal::Penrose::Sample_birth birth;  ///< valid when `is_sample`
-    bool is_sample;                         ///< an A tile is born here
+    double x;                               // abscissa, before any correction
+    double y;                               // ordinate, before any correction
+    double importance;                      // at the nearest point of the region
+    Sample_birth birth;                     // valid when `is_sample`
+    bool is_sample;                         // an A tile is born here
   };
 
-  /// Builds the tree that `context` describes.
-  explicit Penrose_tile_tree(const internal::Penrose::Sampling_context& context)
+  // Builds the tree that `context` describes.
+  explicit Tile_tree(const Sampling_context& context)
     : context_(context)
   {
     build();
   }
 
-  /// \name Levels and tiles
-  /// @{
-
-  /// The number of levels, the root's included.
+  // The number of levels, the root's included.
   int number_of_levels() const { return int(level_begin_.size()) - 1; }
-  /// The first tile of level `l`: the tiles of a level are consecutive.
+  // The first tile of level `l`: the tiles of a level are consecutive.
   Index level_begin(int l) const { return level_begin_[l]; }
-  /// Past the last tile of level `l`.
+  // Past the last tile of level `l`.
   Index level_end(int l) const { return level_begin_[l + 1]; }
-  /// All tiles, level after level.
+  // All tiles, level after level.
   const std::vector<Tile>& tiles() const { return tiles_; }
-  /// All vertices.
+  // All vertices.
   const std::vector<Vertex>& vertices() const { return vertices_; }
-  /// Tile `t`.
+  // Tile `t`.
   const Tile& tile(Index t) const { return tiles_[t]; }
-  /// Vertex `v`.
+  // Vertex `v`.
   const Vertex& vertex(Index v) const { return vertices_[v]; }
-  /// Whether tile `t` has no children.
+  // Whether tile `t` has no children.
   bool is_leaf(Index t) const { return tiles_[t].number_of_children == 0; }
-  /// Child `k` of tile `t`, for `k` below its `number_of_children`.
+  // Child `k` of tile `t`, for `k` below its `number_of_children`.
   Index child(Index t, int k) const { return tiles_[t].first_child + Index(k); }
-  /// The tile across edge `edge` of tile `t` (see `Tile::neighbors`).
+  // The tile across edge `edge` of tile `t` (see `Tile::neighbors`).
   Index neighbor(Index t, int edge) const { return tiles_[t].neighbors[edge]; }
-  /// The length scale of the tiles of `t`'s level: the root's, divided by the golden ratio at each level.
+  // The length scale of the tiles of `t`'s level: the root's, divided by the golden ratio at each level.
   double scale(Index t) const { return context_.scale(tiles_[t].level); }
-  /// The sampling context the tree was built from (advanced).
-  const internal::Penrose::Sampling_context& context() const { return context_; }
-  /// @}
+  // The sampling context the tree was built from.
+  const Sampling_context& context() const { return context_; }
 
-  /// The edge of `n` whose neighbour is `t`, for two tiles of one level that share an edge.
+  // The edge of `n` whose neighbour is `t`, for two tiles of one level that share an edge.
   int facing_edge(Index n, Index t) const
   {
     const Tile& tn = tiles_[n];
@@ -116,11 +102,11 @@ public:
     return -1;
   }
 
-  /// Number of children of subdivided tile `t` along its edge `edge` (1 or
-  /// 2); writes each child and its edge index, from corner `edge` on.
+  // Number of children of subdivided tile `t` along its edge `edge` (1 or
+  // 2); writes each child and its edge index, from corner `edge` on.
   int children_along_edge(Index t, int edge, std::array<std::pair<Index, int>, 2>& out) const
   {
-    const auto& tables = internal::Penrose::tile_edge_tables();
+    const auto& tables = tile_edge_tables();
     const Tile& tt = tiles_[t];
     const int n = tables.number_of_segments[tt.type][edge];
     for(int s = 0; s < n; ++s) {
@@ -130,10 +116,10 @@ public:
     return n;
   }
 
-  /// The vertex that splits edge `edge` of subdivided tile `t`, or `null_index`.
+  // The vertex that splits edge `edge` of subdivided tile `t`, or `null_index`.
   Index split_vertex(Index t, int edge) const
   {
-    const auto& tables = internal::Penrose::tile_edge_tables();
+    const auto& tables = tile_edge_tables();
     const Tile& tt = tiles_[t];
     const int k = tables.new_vertex_on_edge[tt.type][edge];
     if(k < 0) return null_index;
@@ -141,12 +127,12 @@ public:
     return tiles_[tt.first_child + ce.child].vertices[ce.edge];
   }
 
-  /// Calls `f(vertex_index, sample)` for every active sample whose corrected
-  /// position lies in the region, with an `internal::Penrose::Placed_sample`.
+  // Calls `f(vertex_index, sample)` for every active sample whose corrected
+  // position lies in the region, with its Placed_sample.
   template <class F>
   void for_each_sample(F&& f) const
   {
-    internal::Penrose::Placed_sample s;
+    Placed_sample s;
     for(Index v = 0; v < vertices_.size(); ++v) {
       const Vertex& vx = vertices_[v];
       if(vx.is_sample && context_.activate(vx.x, vx.y, vx.importance, vx.birth, s)
@@ -161,7 +147,7 @@ private:
     for(int i = 0; i < 3; ++i)
       add_vertex(context_.root_x(i), context_.root_y(i));
     tiles_.push_back(Tile{0, {{0, 1, 2}}, {{null_index, null_index, null_index}}, null_index,
-                          internal::Penrose::FAT_F, 15, 0, 0});
+                          FAT_F, 15, 0, 0});
     level_begin_ = {0, 1};
     std::size_t refined = 0;
     for(int level = 0; level_begin_[level] < level_begin_[level + 1]; ++level) {
@@ -181,11 +167,11 @@ private:
   // array (10^5 to 3 x 10^7 tiles, a density bound 1 to 512 times too high).
   void check_room_to_grow(int level) const
   {
-    internal::Penrose::check_growth(2. * double(tiles_.size()) + 3., double(null_index), 80.,
-                                    internal::Penrose::physical_memory_bytes(),
-                                    "Penrose_tile_tree: the tree would grow to about ",
+    check_growth(2. * double(tiles_.size()) + 3., double(null_index), 80.,
+                                    physical_memory_bytes(),
+                                    "the tile tree would grow to about ",
                                     " tiles at level " + std::to_string(level + 1),
-                                    internal::Penrose::overrefinement_hint);
+                                    overrefinement_hint);
   }
 
   Index add_vertex(double x, double y)
@@ -193,7 +179,7 @@ private:
     Vertex v;
     v.x = x; v.y = y;
     v.importance = context_.importance(x, y);
-    v.birth = internal::Penrose::Sample_birth{0, 0, 0, 0};
+    v.birth = Sample_birth{0, 0, 0, 0};
     v.is_sample = false;
     vertices_.push_back(v);
     return Index(vertices_.size() - 1);
@@ -220,7 +206,6 @@ private:
 
   void subdivide(Index t)
   {
-    using namespace internal::Penrose;
     const Tile tt = tiles_[t];
     const Subdivision_rule& r = rule(tt.type);
     const int child_level = tt.level + 1;
@@ -261,7 +246,7 @@ private:
 
   void link_children(Index t, Index first)
   {
-    const auto& tables = internal::Penrose::tile_edge_tables();
+    const auto& tables = tile_edge_tables();
     const Tile& tt = tiles_[t];
     for(int c = 0; c < tt.number_of_children; ++c)
       for(int j = 0; j < 3; ++j) {
@@ -282,15 +267,17 @@ private:
   // Fibonacci value of a tile's F-code, all 2 level bits of it.
   std::uint64_t tile_threshold(Index t) const
   {
-    return internal::Penrose::fibonacci_value(tiles_[t].f_code, 2 * tiles_[t].level);
+    return fibonacci_value(tiles_[t].f_code, 2 * tiles_[t].level);
   }
 
-  internal::Penrose::Sampling_context context_;
+  Sampling_context context_;
   std::vector<Tile> tiles_;
   std::vector<Vertex> vertices_;
   std::vector<Index> level_begin_;
 };
 
+} // namespace Penrose
+} // namespace internal
 } // namespace CGAL
 
-#endif // CGAL_PENROSE_TILE_TREE_H
+#endif // CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_TILE_TREE_H
