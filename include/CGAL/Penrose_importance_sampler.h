@@ -14,6 +14,7 @@
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/number_utils.h>
 
+#include <cmath>
 #include <cstdint>
 #include <functional>
 #include <iomanip>
@@ -22,6 +23,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace CGAL {
 
@@ -241,6 +243,42 @@ public:
     for_each_placed([&](const internal::Penrose::Placed_sample& s) { *out++ = to_sample(s); });
     return out;
   }
+
+  /*!
+  Writes into `out` the sample points of the region that lie in `window`,
+  in the depth-first order of the tile tree: the same points, bit for bit,
+  as `operator()(out)` writes there, found in time proportional to their
+  number plus the depth of the tree, since only the tiles whose samples can
+  land in the window are subdivided.
+
+  A window is closed on the sides that lie on or beyond the region's border,
+  and open on the others (a point on its upper or right side belongs to the
+  window above or to the right): the windows of a partition of the region
+  give every sample once, and together all of them. A window may extend
+  beyond the region, or miss it (no point).
+
+  \throws std::invalid_argument if the window is not finite or its corners
+          are not in order.
+  \throws what sampling throws (see above), for the tiles that it visits.
+  */
+  template <class OutputIterator>
+  OutputIterator operator()(const Iso_rectangle_2& window, OutputIterator out) const
+  {
+    auto construct_point = traits_.construct_point_2_object();
+    for_each_placed(sample_window(window), [&](const internal::Penrose::Placed_sample& s) {
+      *out++ = construct_point(FT(s.x), FT(s.y));
+    });
+    return out;
+  }
+
+  /// Writes into `out` the samples of the region that lie in `window`, with
+  /// the data of their leaf tiles, as `operator()(window, out)` does their points.
+  template <class OutputIterator>
+  OutputIterator samples(const Iso_rectangle_2& window, OutputIterator out) const
+  {
+    for_each_placed(sample_window(window), [&](const internal::Penrose::Placed_sample& s) { *out++ = to_sample(s); });
+    return out;
+  }
   /// @}
 
   /// \name Access
@@ -276,12 +314,28 @@ private:
   template <class F>
   void for_each_placed(F&& f) const
   {
+    for_each_placed(context_->region_window(), std::forward<F>(f));
+  }
+
+  template <class F>
+  void for_each_placed(const internal::Penrose::Sample_window& window, F&& f) const
+  {
     const internal::Penrose::Sampling_context& c = *context_;
     internal::Penrose::Placed_sample s;
-    internal::Penrose::for_each_sample_depth_first(c,
+    internal::Penrose::for_each_sample_depth_first(c, window,
       [&](double x, double y, double importance, const internal::Penrose::Sample_birth& b) {
-        if(c.activate(x, y, importance, b, s) && c.contains(s.x, s.y)) f(s);
+        if(c.activate(x, y, importance, b, s) && window.contains(s.x, s.y)) f(s);
       });
+  }
+
+  internal::Penrose::Sample_window sample_window(const Iso_rectangle_2& window) const
+  {
+    auto vertex = traits_.construct_vertex_2_object();
+    const double x0 = coordinate_x(vertex(window, 0)), y0 = coordinate_y(vertex(window, 0));
+    const double x1 = coordinate_x(vertex(window, 2)), y1 = coordinate_y(vertex(window, 2));
+    if(!(std::isfinite(x0) && std::isfinite(y0) && std::isfinite(x1) && std::isfinite(y1) && x0 <= x1 && y0 <= y1))
+      throw std::invalid_argument("Penrose_importance_sampler: the window is not finite, or its corners are not in order");
+    return context_->window(x0, y0, x1, y1);
   }
 
   Point_2 region_min() const { return traits_.construct_vertex_2_object()(region_, 0); }

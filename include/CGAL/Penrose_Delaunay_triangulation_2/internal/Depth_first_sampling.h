@@ -11,15 +11,19 @@
 
 #include <array>
 #include <cstdint>
+#include <utility>
 
 namespace CGAL {
 namespace internal {
 namespace Penrose {
 
-// Calls visit(x, y, importance, birth) for every sample vertex of the tree,
-// in depth-first order, when the tile that creates it is subdivided.
+// Calls visit(x, y, importance, birth) for every sample vertex of the tree
+// whose tile is subdivided for a sample of `window` (see
+// Sampling_context::should_refine), in depth-first order, when the tile that
+// creates it is subdivided: every sample of the window among others near it,
+// in time proportional to their number plus the depth of the tree.
 template <class Visitor>
-void for_each_sample_depth_first(const Sampling_context& context, Visitor&& visit)
+void for_each_sample_depth_first(const Sampling_context& context, const Sample_window& window, Visitor&& visit)
 {
   struct Node
   {
@@ -42,7 +46,7 @@ void for_each_sample_depth_first(const Sampling_context& context, Visitor&& visi
     root.importance[i] = context.importance(root.x[i], root.y[i]);
   }
   root.code = 0; root.threshold = 0; root.type = FAT_F; root.direction = 15; root.level = 0;
-  if(context.should_refine(root.level, root.threshold, root.x, root.y, root.importance)) ++top;
+  if(!window.is_empty() && context.should_refine(root.level, root.threshold, root.x, root.y, root.importance, window)) ++top;
 
   double x[5], y[5], importance[5];
   for(std::size_t refined = 1; top > 0; ++refined) {
@@ -78,7 +82,7 @@ void for_each_sample_depth_first(const Sampling_context& context, Visitor&& visi
         n.importance[i] = importance[cr.corners[i]];
       }
       n.threshold = threshold + pair_weight(cr.code_pair, child_level);
-      if(!context.should_refine(child_level, n.threshold, n.x, n.y, n.importance)) continue;
+      if(!context.should_refine(child_level, n.threshold, n.x, n.y, n.importance, window)) continue;
       n.code = code * 4 + cr.code_pair;
       n.type = cr.type;
       n.direction = add_direction(direction, cr.direction_step);
@@ -86,6 +90,13 @@ void for_each_sample_depth_first(const Sampling_context& context, Visitor&& visi
       ++top;
     }
   }
+}
+
+// The same over the whole region.
+template <class Visitor>
+void for_each_sample_depth_first(const Sampling_context& context, Visitor&& visit)
+{
+  for_each_sample_depth_first(context, context.region_window(), std::forward<Visitor>(visit));
 }
 
 } // namespace Penrose

@@ -60,6 +60,21 @@ struct Placed_sample
   unsigned importance_index;
 };
 
+// A part of the region where samples are wanted: closed on the sides that
+// lie on the region's border, open on the others, so that the windows of a
+// partition of the region share no sample and miss none.
+struct Sample_window
+{
+  double x0, y0, x1, y1;
+  bool closed_x1, closed_y1;
+
+  bool contains(double x, double y) const
+  {
+    return x >= x0 && y >= y0 && (x < x1 || (closed_x1 && x == x1)) && (y < y1 || (closed_y1 && y == y1));
+  }
+  bool is_empty() const { return !(x0 < x1 || (closed_x1 && x0 == x1)) || !(y0 < y1 || (closed_y1 && y0 == y1)); }
+};
+
 // Number of subdivision levels applied everywhere before adaptivity (C.6).
 constexpr int uniform_levels = 6;
 // Structural bits reported with each sample when no table is in use.
@@ -103,6 +118,7 @@ public:
     // at least its birth level; the factor covers the rounding of the moves.
     margin_factor_ = table_ == nullptr ? 0. : table_->max_length() * (1. + 1e-6);
     set_finest_level();
+    region_window_ = region_window();
     max_importance_ = fibonacci().level_importance[max_level + 1];
     structural_bits_ = table_ ? table_->structural_bits : default_structural_bits;
     structural_index_.resize(std::size_t(1) << structural_bits_);
@@ -125,6 +141,14 @@ public:
   double ymin() const { return ymin_; }
   double xmax() const { return xmax_; }
   double ymax() const { return ymax_; }
+  // The whole region, as a window.
+  Sample_window region_window() const { return Sample_window{xmin_, ymin_, xmax_, ymax_, true, true}; }
+  // The part of [x0, x1] x [y0, y1] in the region, closed only on the region's border.
+  Sample_window window(double x0, double y0, double x1, double y1) const
+  {
+    return Sample_window{(std::max)(x0, xmin_), (std::max)(y0, ymin_), (std::min)(x1, xmax_), (std::min)(y1, ymax_),
+                         x1 >= xmax_, y1 >= ymax_};
+  }
   double root_scale() const { return root_scale_; }
   double scale(int level) const { return scale_[level]; }
   double root_x(int i) const { return root_x_[i]; }
@@ -169,11 +193,21 @@ public:
   CGAL_PENROSE_HOT_INLINE bool should_refine(int level, std::uint64_t threshold,
                      const double* x, const double* y, const double* importance) const
   {
+    return should_refine(level, threshold, x, y, importance, region_window_);
+  }
+
+  // The same, for a traversal that wants only the samples of `window`, a
+  // part of the region: a tile is subdivided only if a sample of its subtree
+  // can land in the window. Where it is, the decision is the one of the whole
+  // region, so that the samples of the window are those of the region.
+  CGAL_PENROSE_HOT_INLINE bool should_refine(int level, std::uint64_t threshold, const double* x, const double* y,
+                                             const double* importance, const Sample_window& window) const
+  {
     const double bx0 = (std::min)({x[0], x[1], x[2]}), bx1 = (std::max)({x[0], x[1], x[2]});
     const double by0 = (std::min)({y[0], y[1], y[2]}), by1 = (std::max)({y[0], y[1], y[2]});
     // the samples born below the tile, at level + 1 or deeper, land within m of it
     const double m = margin_factor_ * scale_[level + 1];
-    if(bx1 < xmin_ - m || bx0 > xmax_ + m || by1 < ymin_ - m || by0 > ymax_ + m) return false;
+    if(bx1 < window.x0 - m || bx0 > window.x1 + m || by1 < window.y0 - m || by0 > window.y1 + m) return false;
     if(level < uniform_levels) return true;
     const double least = static_cast<double>(threshold + fibonacci().fib[2 * level + 2]);
     // the corners decide when they already reach a threshold: the bound over
@@ -305,6 +339,7 @@ private:
   double clamp_y(double y) const { return (std::min)((std::max)(y, ymin_), ymax_); }
 
   double xmin_, ymin_, xmax_, ymax_;
+  Sample_window region_window_;
   Density density_;
   Density_bound bound_;
   const Correction_table* table_;
