@@ -53,7 +53,14 @@ struct Request
   std::optional<std::size_t> n;
   double scale = 1.;
   bool correction = true;
+  std::optional<std::array<double, 4>> window;  // the part of the region sampled, if not all of it
 };
+
+void check_rectangle(const char* name, const std::array<double, 4>& r)
+{
+  if(!(r[0] <= r[2] && r[1] <= r[3] && std::isfinite(r[2] - r[0]) && std::isfinite(r[3] - r[1])))
+    throw std::invalid_argument(std::string("the ") + name + " must be (x0, y0, x1, y1), finite, with x0 <= x1 and y0 <= y1");
+}
 
 // The density in the sampler's terms: its value, and a bound over boxes where one is known.
 struct Density
@@ -90,11 +97,17 @@ std::vector<double> sample_coordinates(const Request& r, const Density& d)
 {
   const std::unique_ptr<Sampler> sampler = make_sampler(r, d);
   std::vector<double> xy;
-  xy.reserve(2 * std::size_t(sampler->expected_number_of_points() * 1.05 + 16));
-  (*sampler)(boost::make_function_output_iterator([&xy](const Point& p) {
+  auto out = boost::make_function_output_iterator([&xy](const Point& p) {
     xy.push_back(p.x());
     xy.push_back(p.y());
-  }));
+  });
+  if(!r.window) {
+    xy.reserve(2 * std::size_t(sampler->expected_number_of_points() * 1.05 + 16));
+    (*sampler)(out);
+  } else {
+    const std::array<double, 4>& w = *r.window;
+    (*sampler)(Rectangle(Point(w[0], w[1]), Point(w[2], w[3])), out);
+  }
   return xy;
 }
 
@@ -232,9 +245,10 @@ template <class Construct>
 auto with_density(const py::object& object, std::optional<std::array<double, 4>> region, Request& r,
                   bool sample_first, Construct construct)
 {
-  if(region && !((*region)[0] < (*region)[2] && (*region)[1] < (*region)[3]
-                 && std::isfinite((*region)[2] - (*region)[0]) && std::isfinite((*region)[3] - (*region)[1])))
-    throw std::invalid_argument("the region must be (x0, y0, x1, y1), finite, with x0 < x1 and y0 < y1");
+  if(region) {
+    check_rectangle("region", *region);
+    if(!((*region)[0] < (*region)[2] && (*region)[1] < (*region)[3])) throw std::invalid_argument("the region is empty");
+  }
   if(py::isinstance<py::function>(object)) {
     r.region = region.value_or(std::array<double, 4>{0., 0., 1., 1.});
     const py::function f = py::reinterpret_borrow<py::function>(object);
@@ -308,9 +322,12 @@ Request make_request(const std::optional<py::object>& n, const std::optional<dou
 }
 
 py::array_t<double> sample(const py::object& density, const std::optional<std::array<double, 4>>& region,
-                           const std::optional<py::object>& n, const std::optional<double>& scale, bool correction)
+                           const std::optional<py::object>& n, const std::optional<double>& scale, bool correction,
+                           const std::optional<std::array<double, 4>>& window)
 {
   Request r = make_request(n, scale, correction);
+  if(window) check_rectangle("window", *window);
+  r.window = window;
   std::vector<double> xy = with_density(density, region, r, false, [&r](const Density& d, const auto&) {
     return sample_coordinates(r, d);
   });
@@ -382,8 +399,8 @@ machine's memory; what the density function raises is raised as it is.)doc";
   });
 
   m.def("sample", &penrose_python::sample, "density"_a, "region"_a = py::none(), "n"_a = py::none(),
-        "scale"_a = py::none(), "correction"_a = true,
-        R"doc(sample(density, region=None, n=None, scale=None, correction=True) -> ndarray (N, 2) float64
+        "scale"_a = py::none(), "correction"_a = true, "window"_a = py::none(),
+        R"doc(sample(density, region=None, n=None, scale=None, correction=True, window=None) -> ndarray (N, 2) float64
 
 Blue-noise samples of `density` over the rectangle `region` = (x0, y0, x1, y1),
 in the depth-first order of the tile tree.
@@ -394,7 +411,12 @@ n: the number of points wanted: the density is scaled so that its integral
    integral of the density itself.
 scale: a factor applied to the density, after n. Default 1.
 correction: whether the samples are moved by the sampler's correction
-   vectors (better blue noise); without, they lie on tile vertices.)doc");
+   vectors (better blue noise); without, they lie on tile vertices.
+window: (x0, y0, x1, y1): only the samples of the region that lie in this
+   rectangle, bit for bit those of the whole sample, in time proportional to
+   their number. A window is closed on the region's border and open on its
+   other sides, so that the windows of a partition of the region give each
+   sample once: tiles that match at their borders.)doc");
 
   m.def("triangulate", &penrose_python::triangulate, "density"_a, "region"_a = py::none(), "n"_a = py::none(),
         "scale"_a = py::none(), "correction"_a = true, "boundary"_a = false, "neighbors"_a = false,

@@ -69,6 +69,22 @@ def test_sampling_is_deterministic():
     assert np.array_equal(a, b)
 
 
+def test_windows_partition_the_sample():
+    density = gaussian_image(64)
+    whole = pd.sample(density, n=20000)
+    cuts_x, cuts_y = sorted([0, 10.5, whole[7, 0], 40, 64]), sorted([0, whole[99, 1], 33.3, 64])
+    parts = [pd.sample(density, n=20000, window=(x0, y0, x1, y1))
+             for x0, x1 in zip(cuts_x[:-1], cuts_x[1:]) for y0, y1 in zip(cuts_y[:-1], cuts_y[1:])]
+    assert max(len(p) for p in parts) < len(whole)
+    assert np.array_equal(sorted_rows(np.concatenate(parts)), sorted_rows(whole))
+    assert np.array_equal(pd.sample(density, n=20000, window=(-5, -5, 100, 100)), whole)
+    assert len(pd.sample(density, n=20000, window=(70, 70, 80, 80))) == 0
+    with pytest.raises(ValueError):
+        pd.sample(density, n=20000, window=(5, 5, 1, 1))
+    with pytest.raises(ValueError):
+        pd.sample(density, n=20000, window=(0, 0, float("nan"), 1))
+
+
 def test_correction_vectors_move_the_samples():
     a = pd.sample(1.0, n=2000)
     b = pd.sample(1.0, n=2000, correction=False)
