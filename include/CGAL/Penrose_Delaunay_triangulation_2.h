@@ -238,7 +238,7 @@ public:
     return build(sampler, lift, No_vertex_visitor());
   }
 
-  /// Exchanges the triangulations and their construction statistics.
+  /// Exchanges the triangulations and their construction statistics; throws nothing.
   void swap(Penrose_Delaunay_triangulation_2& other)
   {
     Base::swap(other);
@@ -249,7 +249,7 @@ public:
   /// Those of the last construction or call to `build()`, carried by copies
   /// and swaps; zero if there was none. The operations of
   /// `Delaunay_triangulation_2`, `insert()`, `remove()` and `clear()` among
-  /// them, leave them as they are.
+  /// them, leave them as they are. None of these throws.
   /// @{
 
   /// What the last construction did.
