@@ -18,7 +18,8 @@ namespace penrose_tools {
 
 inline const char* const usage_text =
   "usage: penrose_mesh (--density constant|ramp|radial|image:FILE | --terrain FILE)\n"
-  "                    [--points N | --scale S] [--region X0 Y0 X1 Y1] [--no-correction] [--boundary]\n"
+  "                    [--points N | --scale S] [--max-error E] [--base-fraction F]\n"
+  "                    [--region X0 Y0 X1 Y1] [--no-correction] [--boundary | --no-boundary]\n"
   "                    [--gamma G] [--log] [--invert] [--gradient] [--height-scale S] [--viewer X Y]\n"
   "                    [--out-points FILE] [--out-mesh FILE] [--svg FILE] [--png FILE]\n"
   "                    [--reconstruct FILE] [--stats-json FILE] [--max-pixels N]\n"
@@ -45,14 +46,25 @@ inline const char* const usage_text =
   "                about 2 GB of memory here)\n"
   "\n"
   "sampling:\n"
-  "  --points N    scale the density so that about N points come out (default 10000)\n"
+  "  --points N    scale the density so that about N points come out (default 10000);\n"
+  "                for a terrain, the number of vertices (see --base-fraction)\n"
   "  --scale S     multiply the density (in points per unit area) by S instead\n"
+  "  --max-error E terrain: refine the mesh by greedy insertion until the vertical error\n"
+  "                (in the height's unit) of every cell the mesh covers is at most E, or\n"
+  "                the mesh has --points vertices if given: whichever comes first\n"
+  "  --base-fraction F  terrain: sample F x --points vertices (with --max-error alone,\n"
+  "                F x the number that greedy insertion needs), then insert, one at a\n"
+  "                time, the centre of the cell of largest vertical error until the\n"
+  "                mesh has --points vertices or meets --max-error (default 0.3;\n"
+  "                1: the samples alone)\n"
   "  --region      the rectangle sampled (default 0 0 1 1; an image or a height field is\n"
   "                stretched over it, and by default covers 0 0 WIDTH HEIGHT, or the\n"
   "                extent in the header of an .asc grid)\n"
   "  --no-correction  keep the raw tile vertices (no correction vectors)\n"
   "  --boundary    add points along the border of the region at the local density, so\n"
-  "                that the mesh covers the whole rectangle\n"
+  "                that the mesh covers the whole rectangle (default for images and\n"
+  "                terrains)\n"
+  "  --no-boundary do not\n"
   "\n"
   "output:\n"
   "  --out-points  one \"x y\" line per point (\"x y z\" for a terrain), full precision\n"
@@ -80,7 +92,8 @@ inline const char* const usage_text =
   "  penrose_mesh --density image:photo.jpg --gradient --points 20000 --boundary \\\n"
   "               --reconstruct photo_mesh.png --png photo_edges.png --stats-json photo.json\n"
   "  penrose_mesh --density image:memorial.hdr --log --points 50000 --svg memorial.svg\n"
-  "  penrose_mesh --terrain dem.asc --points 100000 --boundary --viewer 0 0 \\\n"
+  "  penrose_mesh --terrain dem.asc --max-error 0.5 --out-mesh dem.ply --stats-json dem.json\n"
+  "  penrose_mesh --terrain dem.asc --points 100000 --base-fraction 1 --viewer 0 0 \\\n"
   "               --out-mesh dem.ply --png dem.png --stats-json dem.json\n";
 
 struct Options
@@ -88,9 +101,12 @@ struct Options
   bool help = false;
   std::string density = "constant", terrain;
   double points = 10000.;
+  bool points_given = false;
   double scale = 0.;
   double region[4] = {0, 0, 1, 1};
   bool region_given = false, correction = true, boundary = false;
+  double max_error = 0.;      // 0: not given
+  double base_fraction = 0.3;
   double gamma = 1., height_scale = 1.;
   bool log = false, invert = false, gradient = false;
   bool viewer_given = false;
@@ -121,6 +137,7 @@ inline Options parse(int argc, const char* const* argv)
 {
   Options o;
   bool have_points = false, have_scale = false, have_density = false;
+  bool have_boundary = false, no_boundary = false, have_max_error = false, have_base_fraction = false;
   for(int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     auto value = [&](int k = 1) -> const char* {
@@ -135,7 +152,10 @@ inline Options parse(int argc, const char* const* argv)
     else if(a == "--scale") { o.scale = number(value(), a); have_scale = true; ++i; }
     else if(a == "--region") { for(int k = 0; k < 4; ++k) o.region[k] = number(value(k + 1), a); i += 4; o.region_given = true; }
     else if(a == "--no-correction") o.correction = false;
-    else if(a == "--boundary") o.boundary = true;
+    else if(a == "--boundary") { o.boundary = true; have_boundary = true; }
+    else if(a == "--no-boundary") no_boundary = true;
+    else if(a == "--max-error") { o.max_error = number(value(), a); have_max_error = true; ++i; }
+    else if(a == "--base-fraction") { o.base_fraction = number(value(), a); have_base_fraction = true; ++i; }
     else if(a == "--gamma") { o.gamma = number(value(), a); ++i; }
     else if(a == "--log") o.log = true;
     else if(a == "--invert") o.invert = true;
@@ -157,6 +177,7 @@ inline Options parse(int argc, const char* const* argv)
   if(o.density == "image:") usage_error("--density image: needs a file name");
   if(have_points && have_scale) usage_error("give --points or --scale, not both");
   if(have_scale) o.points = 0.;
+  o.points_given = have_points;
   if(have_points && !(o.points >= 1.)) usage_error("--points must be at least 1");
   // beyond, the count would not convert to a std::size_t
   if(have_points && !(o.points <= 1e18)) usage_error("--points must be at most 1e18");
@@ -171,6 +192,11 @@ inline Options parse(int argc, const char* const* argv)
   if((o.log || o.invert || o.gradient) && !image) usage_error("--log, --invert and --gradient apply to images");
   if(!o.reconstruct.empty() && !image) usage_error("--reconstruct needs an image (--density image:FILE)");
   if((o.viewer_given || o.height_scale != 1.) && !terrain) usage_error("--viewer and --height-scale apply to --terrain");
+  if(have_boundary && no_boundary) usage_error("give --boundary or --no-boundary, not both");
+  o.boundary = have_boundary || (!no_boundary && (image || terrain));
+  if(have_max_error && !(o.max_error > 0.)) usage_error("--max-error must be positive");
+  if(have_base_fraction && !(o.base_fraction > 0. && o.base_fraction <= 1.)) usage_error("--base-fraction must be in (0, 1]");
+  if((have_max_error || have_base_fraction) && !terrain) usage_error("--max-error and --base-fraction apply to --terrain");
   return o;
 }
 

@@ -11,6 +11,7 @@
 #include <CGAL/Penrose_Delaunay_triangulation_2.h>
 #include <CGAL/Penrose_importance_sampler.h>
 #include <CGAL/Raster_density_2.h>
+#include <CGAL/refine_terrain_by_greedy_insertion.h>
 #include <CGAL/Penrose_Delaunay_triangulation_2/IO/height_field_io.h>
 #include <CGAL/Penrose_Delaunay_triangulation_2/IO/read_rgb_image.h>
 #include <CGAL/Penrose_Delaunay_triangulation_2/IO/write_triangulation.h>
@@ -179,11 +180,11 @@ Density make_density(const Options& o, Input& in, const K::Iso_rectangle_2& regi
   return d;
 }
 
-std::unique_ptr<Sampler> make_sampler(const Options& o, const K::Iso_rectangle_2& region, const Density& d)
+// `n` points, or the density scaled by o.scale if n is 0.
+std::unique_ptr<Sampler> make_sampler(const Options& o, const K::Iso_rectangle_2& region, const Density& d, std::size_t n)
 {
   using CGAL::parameters::use_correction_vectors;
   using CGAL::parameters::density_upper_bound;
-  const std::size_t n = std::size_t(o.points);
   if(d.upper_bound) {
     if(n) return std::make_unique<Sampler>(region, d.value, density_upper_bound(d.upper_bound,
                  use_correction_vectors(o.correction).number_of_output_points(n)));
@@ -246,6 +247,22 @@ std::size_t add_boundary(Mesh& m, const Options& o, const Density& d, double sca
     }
   }
   return m.points.size() - before;
+}
+
+// Inserts the centres of the cells of largest vertical error into the mesh
+// of a terrain until it has `budget` vertices or every cell is within
+// o.max_error.
+CGAL::Terrain_refinement_result refine(Mesh& m, const Options& o, const Raster<double>& heights, std::size_t budget)
+{
+  using namespace CGAL::parameters;
+  auto add = [&m](Vertex_handle v) {
+    v->info() = m.points.size();
+    m.points.push_back(Point(v->point().x(), v->point().y()));
+    m.vertex.push_back(v);
+  };
+  return CGAL::refine_terrain_by_greedy_insertion(m.t, heights.width, heights.height, heights.values,
+                                                  CGAL::Bbox_2(heights.x0, heights.y0, heights.x1, heights.y1),
+                                                  max_error(o.max_error, number_of_points(budget, visitor(add))));
 }
 
 // The mesh's finite faces, over the points' x and y, for the rasters.
@@ -415,7 +432,7 @@ void write_reconstruction(const std::string& file, const Raster<double>& r)
 
 struct Timings
 {
-  double read = 0., sample = 0., triangulate = 0., measure = 0., write = 0., total = 0.;
+  double read = 0., sample = 0., triangulate = 0., refine = 0., measure = 0., write = 0., total = 0.;
 };
 
 // A JSON number: null where the value does not exist (the PSNR of a mesh
@@ -441,7 +458,8 @@ std::string json_string(const std::string& s)
 }
 
 void write_stats(const Options& o, const Input& in, const Sampler& sampler, const Mesh& m, std::size_t sampled,
-                 std::size_t boundary, const Quality* q, const Timings& t)
+                 std::size_t boundary, const CGAL::Terrain_refinement_result& refined, const Quality* q,
+                 const Timings& t)
 {
   std::string j = "{", separator;
   auto field = [&](const char* name, const std::string& value) {
@@ -452,6 +470,9 @@ void write_stats(const Options& o, const Input& in, const Sampler& sampler, cons
   field("points", count(sampled));
   field("expected_points", json_number(sampler.expected_number_of_points()));
   field("boundary_points", count(boundary));
+  field("inserted_points", count(refined.number_of_inserted_points));
+  if(refined.number_of_inserted_points || o.max_error > 0.)
+    field("max_error_reached", refined.max_error_reached ? "true" : "false");
   field("vertices", count(m.t.number_of_vertices()));
   field("faces", count(m.t.number_of_faces()));
   field("flips", count(m.t.number_of_flips()));
@@ -460,6 +481,7 @@ void write_stats(const Options& o, const Input& in, const Sampler& sampler, cons
   field("read_seconds", json_number(t.read));
   field("sample_seconds", json_number(t.sample));
   field("triangulate_seconds", json_number(t.triangulate));
+  field("refine_seconds", json_number(t.refine));
   field("measure_seconds", json_number(t.measure));
   field("write_seconds", json_number(t.write));
   field("total_seconds", json_number(t.total));
@@ -522,21 +544,48 @@ void run(Options o)
   const Density d = make_density(o, in, region);
   time.read = seconds_since(start);
 
-  bar.stage("sampling", 0.1, 0.2);
-  auto t0 = std::chrono::steady_clock::now();
-  const std::unique_ptr<Sampler> sampler = in_context(o, [&] { return make_sampler(o, region, d); });
-  time.sample = seconds_since(t0);
-
-  // the tile tree is sampled while the triangulation is derived from it
-  bar.stage("triangulating", 0.2, 0.7);
-  t0 = std::chrono::steady_clock::now();
   const Raster<double>& heights = in.heights;
   auto lift = [&heights](double x, double y) { return K::Point_3(x, y, heights.values.empty() ? 0. : heights(x, y)); };
+  std::size_t sampled = 0, boundary = 0;
+  auto sample = [&](Mesh& m, std::size_t n) {
+    const auto t = std::chrono::steady_clock::now();
+    std::unique_ptr<Sampler> sampler = in_context(o, [&] { return make_sampler(o, region, d, n); });
+    time.sample = seconds_since(t);
+    in_context(o, [&] { triangulate(m, *sampler, lift, bar); });
+    sampled = m.points.size();
+    boundary = o.boundary ? add_boundary(m, o, d, sampler->density_scale(), lift) : 0;
+    return sampler;
+  };
+  // A terrain's mesh is sampled for a fraction of its vertices, the rest
+  // inserted greedily. With --max-error alone, that fraction is of the
+  // vertices that greedy insertion needs from a sparse sample.
+  const bool greedy = !heights.values.empty() && (o.max_error > 0. || (o.points > 0. && o.base_fraction < 1.));
+  const std::size_t budget = greedy && (o.points_given || o.max_error == 0.) ? std::size_t(o.points)
+                                                                              : std::numeric_limits<std::size_t>::max();
+  std::size_t n = std::size_t(o.points);
+  auto t0 = std::chrono::steady_clock::now();
+  if(greedy && budget == std::numeric_limits<std::size_t>::max() && n > 0) {
+    bar.stage("estimating", 0.1, 0.2);
+    Mesh pilot;
+    sample(pilot, std::max<std::size_t>(16, heights.width * heights.height / 1024));
+    refine(pilot, o, heights, budget);
+    n = pilot.t.number_of_vertices();
+  }
+  if(greedy && n > 0) n = std::max<std::size_t>(1, std::size_t(std::lround(o.base_fraction * double(n))));
+  time.refine = seconds_since(t0);
+
+  // the tile tree is sampled while the triangulation is derived from it
+  bar.stage("triangulating", 0.2, 0.6);
+  t0 = std::chrono::steady_clock::now();
   Mesh m;
-  in_context(o, [&] { triangulate(m, *sampler, lift, bar); });
-  const std::size_t sampled = m.points.size();
-  const std::size_t boundary = o.boundary ? add_boundary(m, o, d, sampler->density_scale(), lift) : 0;
-  time.triangulate = seconds_since(t0);
+  const std::unique_ptr<Sampler> sampler = sample(m, n);
+  time.triangulate = seconds_since(t0) - time.sample;
+
+  bar.stage("refining", 0.6, 0.7);
+  t0 = std::chrono::steady_clock::now();
+  CGAL::Terrain_refinement_result refined;
+  if(greedy) refined = refine(m, o, heights, budget);
+  time.refine += seconds_since(t0);
 
   bar.stage("measuring", 0.7, 0.85);
   t0 = std::chrono::steady_clock::now();
@@ -556,13 +605,20 @@ void run(Options o)
   if(!o.reconstruct.empty()) write_reconstruction(o.reconstruct, q->rendering);
   time.write = seconds_since(t0);
   time.total = seconds_since(start);
-  if(!o.stats_json.empty()) write_stats(o, in, *sampler, m, sampled, boundary, q.get(), time);
+  if(!o.stats_json.empty()) write_stats(o, in, *sampler, m, sampled, boundary, refined, q.get(), time);
   bar.finish();
 
   std::cerr << "penrose_mesh: " << sampled << " points";
   if(boundary) std::cerr << " + " << boundary << " on the border";
+  if(greedy) std::cerr << " + " << refined.number_of_inserted_points << " inserted";
   std::cerr << ", " << m.t.number_of_faces() << " triangles in " << time.total << " s (read " << time.read
-            << ", sample " << time.sample << ", triangulate " << time.triangulate << ")\n";
+            << ", sample " << time.sample << ", triangulate " << time.triangulate;
+  if(greedy) std::cerr << ", refine " << time.refine;
+  std::cerr << ")\n";
+  if(greedy && o.max_error > 0.)
+    std::cerr << "penrose_mesh: " << (refined.max_error_reached ? "every cell within --max-error "
+                                                                : "stopped at --points vertices with a max error of ")
+              << (refined.max_error_reached ? o.max_error : refined.max_error) << "\n";
   if(q && !in.heights.values.empty())
     std::cerr << "penrose_mesh: rms error " << q->rms_error << " (grid " << q->grid_rms_error << "), max error "
               << q->max_error << " (grid " << q->grid_max_error << ")\n";

@@ -12,12 +12,16 @@
 
 #include <CGAL/Named_function_parameters.h>
 
+#include <cstddef>
+
 namespace CGAL {
 // The tags live in a namespace of this package: a tag that a later CGAL adds
 // to `internal_np` cannot collide with them.
 namespace Penrose_np {
 enum use_correction_vectors_t { use_correction_vectors };
 enum density_upper_bound_t { density_upper_bound };
+enum max_error_t { max_error };
+enum number_of_points_t { number_of_points };
 } // namespace Penrose_np
 
 namespace parameters {
@@ -38,6 +42,38 @@ Named_function_parameters<Bound, Penrose_np::density_upper_bound_t>
 density_upper_bound(const Bound& b)
 {
   return Named_function_parameters<Bound, Penrose_np::density_upper_bound_t>(b);
+}
+
+/// \ingroup PkgPenroseDelaunayTriangulation2NamedParameters
+/// The largest vertical error that `refine_terrain_by_greedy_insertion()` leaves.
+inline Named_function_parameters<double, Penrose_np::max_error_t>
+max_error(double e)
+{
+  return Named_function_parameters<double, Penrose_np::max_error_t>(e);
+}
+
+/// \ingroup PkgPenroseDelaunayTriangulation2NamedParameters
+/// The most vertices that `refine_terrain_by_greedy_insertion()` lets the triangulation have.
+inline Named_function_parameters<std::size_t, Penrose_np::number_of_points_t>
+number_of_points(std::size_t n)
+{
+  return Named_function_parameters<std::size_t, Penrose_np::number_of_points_t>(n);
+}
+
+/// `max_error(e)` followed by the parameters of `np`.
+template <class T, class Tag, class Base>
+Named_function_parameters<double, Penrose_np::max_error_t, Named_function_parameters<T, Tag, Base>>
+max_error(double e, const Named_function_parameters<T, Tag, Base>& np)
+{
+  return {e, np};
+}
+
+/// `number_of_points(n)` followed by the parameters of `np`.
+template <class T, class Tag, class Base>
+Named_function_parameters<std::size_t, Penrose_np::number_of_points_t, Named_function_parameters<T, Tag, Base>>
+number_of_points(std::size_t n, const Named_function_parameters<T, Tag, Base>& np)
+{
+  return {n, np};
 }
 
 /// `use_correction_vectors(b)` followed by the parameters of `np`.

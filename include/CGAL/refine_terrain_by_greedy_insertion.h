@@ -1,0 +1,281 @@
+// Copyright (c) 2026 The Penrose_Delaunay_triangulation_2 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_REFINE_TERRAIN_BY_GREEDY_INSERTION_H
+#define CGAL_REFINE_TERRAIN_BY_GREEDY_INSERTION_H
+
+#include <CGAL/Penrose_Delaunay_triangulation_2/named_parameters.h>
+
+#include <CGAL/Bbox_2.h>
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/number_utils.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <iterator>
+#include <limits>
+#include <queue>
+#include <stdexcept>
+#include <vector>
+
+namespace CGAL {
+
+/// \ingroup PkgPenroseDelaunayTriangulation2Ref
+/// What `refine_terrain_by_greedy_insertion()` did.
+struct Terrain_refinement_result
+{
+  /// The number of vertices inserted.
+  std::size_t number_of_inserted_points = 0;
+  /// The largest vertical error over the cells covered by the triangulation at the end.
+  double max_error = 0.;
+  /// `true` if every covered cell is within `max_error` (the refinement stopped
+  /// there), `false` if it stopped at `number_of_points` vertices before.
+  bool max_error_reached = true;
+};
+
+namespace internal {
+namespace Penrose {
+
+// The greedy refinement: for each face, its worst cell in a priority queue;
+// an insertion rescans only the faces it creates. The entry of a destroyed
+// face is recognised when it comes out: its face is free, or holds other
+// vertices (a face that insertion creates always holds the new vertex).
+template <class DT, class HeightRange>
+class Greedy_terrain_refinement
+{
+  typedef typename DT::Face_handle Face_handle;
+  typedef typename DT::Vertex_handle Vertex_handle;
+  typedef typename DT::Point Point;
+
+  struct Entry
+  {
+    double error;
+    std::size_t cell;
+    Face_handle face;
+    Vertex_handle vertex[3];
+    bool operator<(const Entry& e) const { return error < e.error; }
+  };
+
+public:
+  Greedy_terrain_refinement(DT& dt, std::size_t width, std::size_t height, const HeightRange& heights,
+                            const Bbox_2& region)
+    : dt_(dt), w_(width), h_(height), heights_(heights), x0_(region.xmin()), y1_(region.ymax()),
+      cell_x_((region.xmax() - region.xmin()) / double(width)),
+      cell_y_((region.ymax() - region.ymin()) / double(height))
+  {}
+
+  template <class Visitor>
+  Terrain_refinement_result run(double max_error, std::size_t number_of_points, Visitor& visitor)
+  {
+    Terrain_refinement_result result;
+    if(dt_.dimension() == 2)
+      for(Face_handle f : dt_.finite_face_handles()) scan(f);
+    while(!queue_.empty()) {
+      const Entry e = queue_.top();
+      if(!current(e)) { queue_.pop(); continue; }
+      if(e.error <= max_error) break;
+      if(dt_.number_of_vertices() >= number_of_points) {
+        result.max_error_reached = false;
+        break;
+      }
+      queue_.pop();
+      const std::size_t i = e.cell % w_, j = e.cell / w_;
+      const Point p(x0_ + (double(i) + 0.5) * cell_x_, y1_ - (double(j) + 0.5) * cell_y_, double(heights_[e.cell]));
+      const std::size_t before = dt_.number_of_vertices();
+      const Vertex_handle v = dt_.insert(p, e.face);
+      if(dt_.number_of_vertices() == before)
+        v->set_point(p);  // a vertex at the cell's centre with another height: it takes the cell's
+      else {
+        ++result.number_of_inserted_points;
+        visitor(v);
+      }
+      auto f = dt_.incident_faces(v), done = f;
+      do
+        if(!dt_.is_infinite(f)) scan(f);
+      while(++f != done);
+    }
+    result.max_error = queue_.empty() ? 0. : queue_.top().error;
+    return result;
+  }
+
+private:
+  // Whether the face of `e` still exists. (After a vertex took a cell's
+  // height, see run(), the older entries of its faces look current too: at
+  // worst one of them wastes an insertion, as the faces were scanned again.)
+  bool current(const Entry& e) const
+  {
+    if(!dt_.tds().faces().is_used(e.face)) return false;
+    for(int k = 0; k < 3; ++k)
+      if(e.face->vertex(k) != e.vertex[k]) return false;
+    return true;
+  }
+
+  // The cell coordinates of a point: cell (i, j) is centred at (i, j).
+  double u(const Point& p) const { return (to_double(p.x()) - x0_) / cell_x_ - 0.5; }
+  double v(const Point& p) const { return (y1_ - to_double(p.y())) / cell_y_ - 0.5; }
+
+  // The linear interpolation of the heights of a face's vertices, in cell coordinates.
+  struct Plane
+  {
+    double u0, v0, z0, a = 0., b = 0.;
+    bool flat = false;  // no area in doubles
+
+    Plane(Face_handle f, const Greedy_terrain_refinement& r)
+    {
+      double u[3], v[3], z[3];
+      for(int k = 0; k < 3; ++k) {
+        const Point& p = f->vertex(k)->point();
+        u[k] = r.u(p);
+        v[k] = r.v(p);
+        z[k] = to_double(p.z());
+      }
+      u0 = u[0]; v0 = v[0]; z0 = z[0];
+      const double d = (u[1] - u[0]) * (v[2] - v[0]) - (u[2] - u[0]) * (v[1] - v[0]);
+      flat = d == 0.;
+      if(!flat) {
+        a = ((z[1] - z[0]) * (v[2] - v[0]) - (z[2] - z[0]) * (v[1] - v[0])) / d;
+        b = ((u[1] - u[0]) * (z[2] - z[0]) - (u[2] - u[0]) * (z[1] - z[0])) / d;
+      }
+    }
+    double operator()(double u, double v) const { return z0 + a * (u - u0) + b * (v - v0); }
+  };
+
+  // Pushes the worst cell of the finite face `f`. Each row's span is bounded
+  // by the crossings of its edges, each computed from the edge's endpoints in
+  // a fixed order and kept inclusive: two faces find the same crossing on
+  // their common edge, so that every cell covered is scanned.
+  void scan(Face_handle f)
+  {
+    const Plane plane(f, *this);
+    if(plane.flat) return;
+    double u[3], v[3];
+    for(int k = 0; k < 3; ++k) {
+      u[k] = this->u(f->vertex(k)->point());
+      v[k] = this->v(f->vertex(k)->point());
+    }
+    const double v_lo = (std::max)(0., std::ceil((std::min)({v[0], v[1], v[2]})));
+    const double v_hi = (std::min)(double(h_) - 1., std::floor((std::max)({v[0], v[1], v[2]})));
+    Entry worst{0., 0, f, {f->vertex(0), f->vertex(1), f->vertex(2)}};
+    for(double row = v_lo; row <= v_hi; ++row) {
+      double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+      for(int k = 0; k < 3; ++k) {
+        int p = k, q = (k + 1) % 3;
+        if(v[q] < v[p] || (v[q] == v[p] && u[q] < u[p])) std::swap(p, q);
+        if(row < v[p] || row > v[q]) continue;
+        if(v[p] == v[q]) {
+          lo = (std::min)(lo, u[p]);
+          hi = (std::max)(hi, u[q]);
+        } else {
+          const double c = u[p] + (row - v[p]) * (u[q] - u[p]) / (v[q] - v[p]);
+          lo = (std::min)(lo, c);
+          hi = (std::max)(hi, c);
+        }
+      }
+      const double i_lo = (std::max)(0., std::ceil(lo)), i_hi = (std::min)(double(w_) - 1., std::floor(hi));
+      const std::size_t row_start = std::size_t(row) * w_;
+      for(double i = i_lo; i <= i_hi; ++i) {
+        const std::size_t cell = row_start + std::size_t(i);
+        const double e = std::abs(plane(i, row) - double(heights_[cell]));
+        if(e > worst.error) {
+          worst.error = e;
+          worst.cell = cell;
+        }
+      }
+    }
+    if(worst.error > 0.) queue_.push(worst);
+  }
+
+  DT& dt_;
+  std::size_t w_, h_;
+  const HeightRange& heights_;
+  double x0_, y1_, cell_x_, cell_y_;
+  std::priority_queue<Entry> queue_;
+};
+
+} // namespace Penrose
+} // namespace internal
+
+/*!
+\ingroup PkgPenroseDelaunayTriangulation2Ref
+
+Refines the triangulation of a terrain by greedy insertion (Garland and
+Heckbert's, as in delatin): inserts, one at a time, the centre of the grid
+cell whose vertical error, the distance between its height and the linear
+interpolation of the heights of the vertices of the face over it, is the
+largest, until every cell is within `max_error` or the triangulation has
+`number_of_points` vertices, whichever comes first.
+
+The height grid has `width x height` cells over `region`, row after row from
+the top (largest y), as in an image: cell (i, j) is centred at
+(xmin + (i + 1/2) dx, ymax - (j + 1/2) dy), with dx and dy the size of a cell,
+and its height is `heights[j * width + i]`. A cell inserted becomes a vertex
+at its centre with its height. The triangulation is typically a
+`Penrose_Delaunay_triangulation_2` built from samples of the grid, for
+example with the density that `penrose_mesh --terrain` takes from its
+curvature, and lifted to the heights of the grid. It stays a Delaunay
+triangulation of its points.
+
+Each face keeps its worst cell in a priority queue; an insertion rescans only
+the faces it creates, so the cost is that of the insertions plus a scan of
+the cells under the new faces. The error is measured at every cell whose
+centre a finite face covers (on an edge or vertex included); the others, outside
+the convex hull, are neither measured nor inserted. A vertex already at the
+centre of a cell whose error is still too large (a vertex of the
+triangulation given, lifted to another height) takes the height of the cell.
+
+\tparam DT a `Delaunay_triangulation_2<Projection_traits_xy_3<K>, Tds>` (a
+        `Penrose_Delaunay_triangulation_2` over the same traits is one).
+\tparam HeightRange a random access range of values convertible to `double`.
+
+\param dt the triangulation refined.
+\param width, height the number of columns and rows of the grid.
+\param heights the `width * height` heights.
+\param region the rectangle that the grid covers.
+\param np an optional sequence of named parameters among:
+  - `max_error(e)`: the largest vertical error allowed, a non-negative
+    `double` (default 0: insert until the interpolation is exact at every
+    cell covered);
+  - `number_of_points(n)`: the most vertices the triangulation may have, a
+    `std::size_t`, existing ones included (default: no limit);
+  - `visitor(f)`: called as `f(v)` with the handle of each vertex inserted.
+
+\returns what was inserted, the largest error at the end and which bound
+stopped the refinement.
+
+\throws std::invalid_argument if the grid is empty or its size does not
+match `heights`, a height is NaN or infinite, `region` is empty or not
+finite, or `max_error` is negative or NaN. The triangulation is then left
+unchanged. What `dt.insert()` and the visitor throw passes through.
+*/
+template <class DT, class HeightRange, class NamedParameters = parameters::Default_named_parameters>
+Terrain_refinement_result refine_terrain_by_greedy_insertion(DT& dt, std::size_t width, std::size_t height,
+                                                             const HeightRange& heights, const Bbox_2& region,
+                                                             const NamedParameters& np = parameters::default_values())
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  const double e = choose_parameter(get_parameter(np, Penrose_np::max_error), 0.);
+  const std::size_t n = choose_parameter(get_parameter(np, Penrose_np::number_of_points),
+                                         (std::numeric_limits<std::size_t>::max)());
+  auto visitor = choose_parameter(get_parameter(np, internal_np::visitor), [](typename DT::Vertex_handle) {});
+  const std::size_t size = std::size_t(std::distance(std::begin(heights), std::end(heights)));
+  if(width == 0 || height == 0 || height > size / width || size != width * height)
+    throw std::invalid_argument("refine_terrain_by_greedy_insertion: the grid is empty or its size does not match");
+  for(std::size_t k = 0; k < size; ++k)
+    if(!std::isfinite(double(heights[k])))
+      throw std::invalid_argument("refine_terrain_by_greedy_insertion: the height of cell (" + std::to_string(k % width)
+                                  + ", " + std::to_string(k / width) + ") is not finite");
+  const double inf = std::numeric_limits<double>::infinity();
+  if(!(region.xmax() > region.xmin() && region.ymax() > region.ymin() && region.xmax() - region.xmin() < inf
+       && region.ymax() - region.ymin() < inf))
+    throw std::invalid_argument("refine_terrain_by_greedy_insertion: the region is empty or not finite");
+  if(!(e >= 0.)) throw std::invalid_argument("refine_terrain_by_greedy_insertion: max_error must be non-negative");
+  internal::Penrose::Greedy_terrain_refinement<DT, HeightRange> refinement(dt, width, height, heights, region);
+  return refinement.run(e, n, visitor);
+}
+
+} // namespace CGAL
+
+#endif // CGAL_REFINE_TERRAIN_BY_GREEDY_INSERTION_H
