@@ -471,6 +471,30 @@ TEST(Triangulation, RefusesWhatCannotFit)
   EXPECT_TRUE(edge_set(pdt, xy_of) == before);
 }
 
+TEST(Triangulation, RefinementCapRefusesALooseBound)
+{
+  // a bound 10^6 times the density grew the base mesh to 8-9 GB for 81 s
+  // before its length_error; the cap on the tiles refined per expected point
+  // refuses it as the tree grows, and the triangulation can be built again
+  auto one = [](const Point&) { return 1.; };
+  auto loose = [](const Epick::Iso_rectangle_2&) { return 1e6; };
+  CGAL::Penrose_Delaunay_triangulation_2<Epick> pdt(
+    Sampler(unit_square, one, CGAL::parameters::number_of_output_points(500)));
+  try {
+    pdt.build(Sampler(unit_square, one, CGAL::parameters::density_upper_bound(loose).number_of_output_points(1004)),
+              [](double x, double y) { return Point(x, y); });
+    ADD_FAILURE() << "a bound 10^6 times the density was not refused";
+  } catch(const std::length_error& e) {
+    EXPECT_NE(std::string(e.what()).find("tiles refined for about 1e+03 points expected"), std::string::npos)
+      << e.what();
+  }
+  EXPECT_TRUE(pdt.is_valid());
+  pdt.build(Sampler(unit_square, one, CGAL::parameters::number_of_output_points(500)),
+            [](double x, double y) { return Point(x, y); });
+  EXPECT_GT(pdt.number_of_vertices(), 400u);
+  EXPECT_TRUE(pdt.is_valid());
+}
+
 TEST(Triangulation, FewPointsHaveCgalsDimension)
 {
   // tiny densities: 0, 1, 2, ... points

@@ -260,6 +260,21 @@ TEST(Tiles, ThresholdPruningDropsNoActiveSample)
   }
 }
 
+TEST(Tiles, TreeRefusesALooseBoundAsItGrows)
+{
+  // the cap on the tiles refined per expected point holds for the tree too
+  const Sampler loose(unit_square, [](const Point&) { return 1.; },
+                      CGAL::parameters::density_upper_bound([](const Epick::Iso_rectangle_2&) { return 1e6; })
+                        .number_of_output_points(1004));
+  try {
+    tile_tree(loose);
+    ADD_FAILURE() << "a bound 10^6 times the density was not refused";
+  } catch(const std::length_error& e) {
+    EXPECT_NE(std::string(e.what()).find("tiles refined for about 1e+03 points expected"), std::string::npos)
+      << e.what();
+  }
+}
+
 TEST(Tiles, RegionPruningDropsNoSample)
 {
   // A tile beyond the region's margin is not subdivided. No sample that its

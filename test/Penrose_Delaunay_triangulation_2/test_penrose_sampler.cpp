@@ -261,6 +261,32 @@ TEST(Sampler, MaximumNumberGuardsMemory)
   EXPECT_NO_THROW(Sampler(unit_square, one, CGAL::parameters::number_of_output_points(5000).maximum_number(6000)));
 }
 
+TEST(Sampler, RefinementCapRefusesALooseBound)
+{
+  // a bound 10^6 times the density refined tiles that hold no point for 95 s
+  // before its 1,004 points: the cap on the tiles refined per expected point
+  // refuses it as the tree grows. A bound 64 times too high is within the
+  // cap, and gives the points of a tight one.
+  auto one = [](const Point&) { return 1.; };
+  auto bound = [](double k) { return [k](const Epick::Iso_rectangle_2&) { return k; }; };
+  auto sampled = [&](double k) {
+    std::vector<Point> points;
+    Sampler(unit_square, one, CGAL::parameters::density_upper_bound(bound(k)).number_of_output_points(1004))
+      (std::back_inserter(points));
+    return points;
+  };
+  try {
+    sampled(1e6);
+    ADD_FAILURE() << "a bound 10^6 times the density was not refused";
+  } catch(const std::length_error& e) {
+    EXPECT_NE(std::string(e.what()).find("tiles refined for about 1e+03 points expected (at most 256 a point"),
+              std::string::npos) << e.what();
+  }
+  const std::vector<Point> tight = sampled(1.);
+  EXPECT_GT(tight.size(), 900u);
+  EXPECT_EQ(sampled(64.), tight);
+}
+
 TEST(Sampler, ConservativeBoundFindsThinFeatures)
 {
   // a thin bright line that the probes of most tiles miss
