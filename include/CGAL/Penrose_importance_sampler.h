@@ -272,7 +272,8 @@ public:
   }
 
   /// Writes into `out` the samples of the region that lie in `window`, with
-  /// the data of their leaf tiles, as `operator()(window, out)` does their points.
+  /// the data of their leaf tiles, as `operator()(window, out)` does their
+  /// points, and throws what it throws.
   template <class OutputIterator>
   OutputIterator samples(const Iso_rectangle_2& window, OutputIterator out) const
   {
