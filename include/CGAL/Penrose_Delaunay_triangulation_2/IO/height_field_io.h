@@ -1,8 +1,9 @@
 // Copyright (c) 2026 The Penrose_Delaunay_triangulation_2 authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Reads and writes height fields: 16-bit (or 8-bit) grey PNG and PGM through
-// stb_image (Debian's libstb-dev; link with -lstb), and ESRI ASCII grids.
+// Reads and writes height fields: 16-bit (or 8-bit) grey PNG and PGM, read
+// through stb_image (Debian's libstb-dev; link with -lstb), PNG written
+// through libpng (libpng-dev), and ESRI ASCII grids.
 
 #ifndef CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_IO_HEIGHT_FIELD_IO_H
 #define CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_IO_HEIGHT_FIELD_IO_H
@@ -10,6 +11,7 @@
 #include <CGAL/Penrose_Delaunay_triangulation_2/IO/internal/file_names.h>
 #include <CGAL/Penrose_Delaunay_triangulation_2/IO/internal/image_checks.h>
 
+#include <png.h>
 #include <stb/stb_image.h>
 
 #include <algorithm>
@@ -316,60 +318,22 @@ inline void write_bytes(const std::string& file, const std::string& bytes)
   if(!out) throw file_error(file, "cannot write");
 }
 
-// Heights as 16-bit samples, rounded and clamped to [0, 65535], big-endian.
+// A height as a 16-bit sample, rounded and clamped to [0, 65535].
+inline std::uint16_t sample_16(double height)
+{
+  return std::uint16_t(std::round((std::min)((std::max)(height, 0.), 65535.)));
+}
+
+// The heights as 16-bit samples, big-endian.
 inline std::string big_endian_samples(const Height_field& hf)
 {
   std::string s(2 * hf.values.size(), '\0');
   for(std::size_t k = 0; k < hf.values.size(); ++k) {
-    const double v = std::round((std::min)((std::max)(hf.values[k], 0.), 65535.));
-    s[2 * k] = char(unsigned(v) >> 8);
-    s[2 * k + 1] = char(unsigned(v) & 0xff);
+    const unsigned v = sample_16(hf.values[k]);
+    s[2 * k] = char(v >> 8);
+    s[2 * k + 1] = char(v & 0xff);
   }
   return s;
-}
-
-inline void put_u32(std::string& s, std::uint32_t v)
-{
-  for(int k = 3; k >= 0; --k) s.push_back(char((v >> (8 * k)) & 0xff));
-}
-
-inline std::uint32_t crc32(const std::string& s, std::size_t from)
-{
-  std::uint32_t c = 0xffffffffu;
-  for(std::size_t k = from; k < s.size(); ++k) {
-    c ^= (unsigned char)s[k];
-    for(int b = 0; b < 8; ++b) c = (c >> 1) ^ (0xedb88320u & (0u - (c & 1u)));
-  }
-  return c ^ 0xffffffffu;
-}
-
-inline void put_png_chunk(std::string& png, const char* type, const std::string& data)
-{
-  put_u32(png, std::uint32_t(data.size()));
-  const std::size_t start = png.size();
-  png += type;
-  png += data;
-  put_u32(png, crc32(png, start));
-}
-
-// A zlib stream of stored (uncompressed) deflate blocks: no dependency, and
-// the height fields this package writes are small.
-inline std::string zlib_stored(const std::string& raw)
-{
-  std::string z("\x78\x01", 2);
-  std::uint32_t a = 1, b = 0;
-  for(unsigned char ch : raw) { a = (a + ch) % 65521u; b = (b + a) % 65521u; }
-  std::size_t at = 0;
-  do {
-    const std::size_t len = (std::min)(raw.size() - at, std::size_t(65535));
-    z.push_back(at + len == raw.size() ? 1 : 0);  // BFINAL on the last block, BTYPE 00
-    z.push_back(char(len & 0xff)); z.push_back(char(len >> 8));
-    z.push_back(char(~len & 0xff)); z.push_back(char((~len >> 8) & 0xff));
-    z.append(raw, at, len);
-    at += len;
-  } while(at < raw.size());
-  put_u32(z, (b << 16) | a);
-  return z;
 }
 
 } // namespace internal
@@ -384,24 +348,25 @@ inline void write_PGM_16(const std::string& file, const Height_field& hf)
 }
 
 /// \ingroup PkgPenroseDelaunayTriangulation2IO
-/// Writes `hf` as a 16-bit grey PNG, heights rounded and clamped to [0, 65535].
-/// \throws std::runtime_error if the file cannot be written.
+/// Writes `hf` as a 16-bit grey PNG with libpng, heights rounded and clamped to [0, 65535].
+/// \throws std::runtime_error if the file cannot be written, or libpng refuses the image.
 inline void write_PNG_16(const std::string& file, const Height_field& hf)
 {
-  const std::string samples = internal::big_endian_samples(hf);
-  std::string raw;  // each row prefixed by its filter type, 0 (none)
-  for(std::size_t j = 0; j < hf.height; ++j) {
-    raw.push_back('\0');
-    raw.append(samples, 2 * j * hf.width, 2 * hf.width);
-  }
-  std::string header;
-  internal::put_u32(header, std::uint32_t(hf.width));
-  internal::put_u32(header, std::uint32_t(hf.height));
-  header += std::string("\x10\x00\x00\x00\x00", 5);  // 16 bits, grey, deflate, no filter, no interlace
-  std::string png("\x89PNG\r\n\x1a\n", 8);
-  internal::put_png_chunk(png, "IHDR", header);
-  internal::put_png_chunk(png, "IDAT", internal::zlib_stored(raw));
-  internal::put_png_chunk(png, "IEND", std::string());
+  std::vector<png_uint_16> samples(hf.values.size());
+  for(std::size_t k = 0; k < samples.size(); ++k) samples[k] = internal::sample_16(hf.values[k]);
+  png_image image;
+  std::memset(&image, 0, sizeof image);
+  image.version = PNG_IMAGE_VERSION;
+  image.width = png_uint_32(hf.width);
+  image.height = png_uint_32(hf.height);
+  image.format = PNG_FORMAT_LINEAR_Y;  // 16 bits, grey, samples in the machine's byte order
+  png_alloc_size_t size = 0;
+  const bool sized = hf.width <= 0x7fffffffu && hf.height <= 0x7fffffffu
+                     && png_image_write_to_memory(&image, nullptr, &size, 0, samples.data(), 0, nullptr);
+  std::string png(sized ? size : 0, '\0');
+  if(!sized || !png_image_write_to_memory(&image, &png[0], &size, 0, samples.data(), 0, nullptr))
+    throw internal::file_error(file, std::string("cannot encode the PNG: ") + image.message);
+  png.resize(size);
   internal::write_bytes(file, png);
 }
 
