@@ -120,7 +120,7 @@ endforeach()
 # A mesh without faces has no PSNR (null, not inf); a file name with a quote,
 # '<' and '&' stays a string in the JSON and an attribute in the SVG.
 file(COPY_FILE ${DATA}/test_image.png "${WORK}/q\"<&.png")
-run_mesh(--density "image:${WORK}/q\"<&.png" --points 1 --stats-json ${WORK}/names.json --svg ${WORK}/names.svg)
+run_mesh(--density "image:${WORK}/q\"<&.png" --points 1 --no-boundary --stats-json ${WORK}/names.json --svg ${WORK}/names.svg)
 file(READ ${WORK}/names.json json)
 string(JSON density ERROR_VARIABLE json_error GET "${json}" density)
 string(JSON psnr_type ERROR_VARIABLE json_error TYPE "${json}" psnr)
