@@ -2,7 +2,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The bars of Penrose_Delaunay_triangulation_2, each against CGAL in the same
-// process and on the same points:
+// process and on the same points, with Sequential_tag, or with Parallel_tag
+// on at most T threads (tbb::global_control) after `--threads T`:
+//   triangulation_benchmark [--threads T] MODE ...
 //   triangulation_benchmark speed [N=1e6] [constant|ramp] [runs=5]
 //       Penrose_Delaunay_triangulation_2 built from a sampler (it walks the
 //       tile tree itself: sampling and triangulation in one pass), against
@@ -33,6 +35,10 @@
 #include "benchmark_support.h"
 #include "figure8_inputs.h"
 
+#if defined(CGAL_LINKED_WITH_TBB)
+#  include <tbb/global_control.h>
+#endif
+
 #include <cstdlib>
 #include <functional>
 #include <iostream>
@@ -45,7 +51,8 @@
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef K::Point_2 Point;
 typedef CGAL::Penrose_importance_sampler<K> Sampler;
-typedef CGAL::Penrose_Delaunay_triangulation_2<K> Pdt;
+template <class ConcurrencyTag>
+using Penrose_dt = CGAL::Penrose_Delaunay_triangulation_2<K, CGAL::Default, ConcurrencyTag>;
 typedef CGAL::Delaunay_triangulation_2<K> Dt;
 typedef benchmark_support::Hierarchy<K> Hierarchy;
 using benchmark_support::median;
@@ -59,6 +66,7 @@ static bool is_size(const std::string& n)
   return end != n.c_str() && *end == '\0' && v >= 1. && v <= 1e9;
 }
 
+template <class Pdt>
 static int speed(double n, const std::string& input, int runs)
 {
   std::vector<double> tp, ts, tc, th;
@@ -116,6 +124,7 @@ static std::size_t triangulate_with_cgal(const Sampler& sampler, double& seconds
   return dt.number_of_vertices();
 }
 
+template <class Pdt>
 static int memory(const std::string& which, double n)
 {
   const Sampler sampler = benchmark_support::unit_square_sampler<K>("constant", n);
@@ -133,6 +142,7 @@ static int memory(const std::string& which, double n)
   return 0;
 }
 
+template <class Pdt>
 static int scaling(const std::string& input)
 {
   const double sizes[2] = {1e5, 4e6};
@@ -154,6 +164,7 @@ static int scaling(const std::string& input)
   return 0;
 }
 
+template <class Pdt>
 static int once(double n, const std::string& input, const std::string& method)
 {
   const Sampler sampler = benchmark_support::unit_square_sampler<K>(input, n);
@@ -174,7 +185,7 @@ static int once(double n, const std::string& input, const std::string& method)
 // Whether `t` has the same number of finite edges as `pdt`, and each edge of
 // `pdt` between the same two points. Each vertex of `t` is found by its point
 // (the sampler's points are distinct), each edge by Triangulation_2::is_edge().
-template <class Triangulation>
+template <class Pdt, class Triangulation>
 static bool has_the_edges_of(const Pdt& pdt, const Triangulation& t)
 {
   if(t.number_of_vertices() != pdt.number_of_vertices()) return false;
@@ -190,6 +201,7 @@ static bool has_the_edges_of(const Pdt& pdt, const Triangulation& t)
   return edges == std::size_t(std::distance(t.finite_edges_begin(), t.finite_edges_end()));
 }
 
+template <class Pdt>
 static int check(double n, const std::string& input, const std::string& image)
 {
   const Sampler sampler = benchmark_support::figure8_sampler<K>(input, n, image);
@@ -209,33 +221,61 @@ static int check(double n, const std::string& input, const std::string& image)
   return valid && few_fallbacks && as_dt && as_hierarchy ? 0 : 1;
 }
 
-int main(int argc, char** argv)
+// The mode of the command line `argv`, with the Penrose DT `Pdt`.
+template <class Pdt>
+static int run(int argc, char** argv)
 {
   const std::string mode = argc > 1 ? argv[1] : "speed";
   auto arg = [&](int i, const char* otherwise) { return std::string(argc > i ? argv[i] : otherwise); };
-  const bool valid =
-    (mode == "speed" && is_size(arg(2, "1e6")) && benchmark_support::is_unit_square_input(arg(3, "constant")) && std::atoi(arg(4, "5").c_str()) >= 1) ||
-    (mode == "memory" && (arg(2, "penrose") == "penrose" || arg(2, "penrose") == "cgal") && is_size(arg(3, "1e6"))) ||
-    (mode == "scaling" && benchmark_support::is_unit_square_input(arg(2, "constant"))) ||
-    (mode == "once" && is_size(arg(2, "1e6")) && benchmark_support::is_unit_square_input(arg(3, "constant")) &&
-     (arg(4, "penrose") == "penrose" || arg(4, "penrose") == "cgal")) ||
-    (mode == "check" && is_size(arg(2, "1e6")) && benchmark_support::is_figure8_input(arg(3, "constant")));
-  if(!valid) {
-    std::cerr << "usage: triangulation_benchmark speed [N] [constant|ramp] [runs] | memory penrose|cgal [N] | "
-                 "scaling [constant|ramp] | once [N] [constant|ramp] [penrose|cgal] | "
-                 "check [N] [constant|ramp|image|terrain] [IMAGE]\n";
-    return 2;
-  }
-  if(mode == "speed") return speed(std::atof(arg(2, "1e6").c_str()), arg(3, "constant"), std::atoi(arg(4, "5").c_str()));
-  if(mode == "memory") return memory(arg(2, "penrose"), std::atof(arg(3, "1e6").c_str()));
-  if(mode == "scaling") return scaling(arg(2, "constant"));
+  if(mode == "speed") return speed<Pdt>(std::atof(arg(2, "1e6").c_str()), arg(3, "constant"), std::atoi(arg(4, "5").c_str()));
+  if(mode == "memory") return memory<Pdt>(arg(2, "penrose"), std::atof(arg(3, "1e6").c_str()));
+  if(mode == "scaling") return scaling<Pdt>(arg(2, "constant"));
   if(mode == "check") {
     try {
-      return check(std::atof(arg(2, "1e6").c_str()), arg(3, "constant"), arg(4, "data/test_image.png"));
+      return check<Pdt>(std::atof(arg(2, "1e6").c_str()), arg(3, "constant"), arg(4, "data/test_image.png"));
     } catch(const std::exception& e) {  // an unreadable image
       std::cerr << "triangulation_benchmark: " << e.what() << "\n";
       return 2;
     }
   }
-  return once(std::atof(arg(2, "1e6").c_str()), arg(3, "constant"), arg(4, "penrose"));
+  return once<Pdt>(std::atof(arg(2, "1e6").c_str()), arg(3, "constant"), arg(4, "penrose"));
+}
+
+int main(int argc, char** argv)
+{
+  // --threads T: Parallel_tag on at most T threads; 0, or none, Sequential_tag
+  int threads = 0;
+  if(argc > 2 && std::string(argv[1]) == "--threads") {
+    threads = std::atoi(argv[2]);
+    argc -= 2;
+    argv += 2;
+  }
+  const std::string mode = argc > 1 ? argv[1] : "speed";
+  auto arg = [&](int i, const char* otherwise) { return std::string(argc > i ? argv[i] : otherwise); };
+  const bool valid = threads >= 0 &&
+    ((mode == "speed" && is_size(arg(2, "1e6")) && benchmark_support::is_unit_square_input(arg(3, "constant")) && std::atoi(arg(4, "5").c_str()) >= 1) ||
+     (mode == "memory" && (arg(2, "penrose") == "penrose" || arg(2, "penrose") == "cgal") && is_size(arg(3, "1e6"))) ||
+     (mode == "scaling" && benchmark_support::is_unit_square_input(arg(2, "constant"))) ||
+     (mode == "once" && is_size(arg(2, "1e6")) && benchmark_support::is_unit_square_input(arg(3, "constant")) &&
+      (arg(4, "penrose") == "penrose" || arg(4, "penrose") == "cgal")) ||
+     (mode == "check" && is_size(arg(2, "1e6")) && benchmark_support::is_figure8_input(arg(3, "constant"))));
+#if !defined(CGAL_LINKED_WITH_TBB)
+  if(threads > 0) {
+    std::cerr << "triangulation_benchmark: built without TBB, no --threads\n";
+    return 2;
+  }
+#endif
+  if(!valid) {
+    std::cerr << "usage: triangulation_benchmark [--threads T] speed [N] [constant|ramp] [runs] | memory penrose|cgal [N] | "
+                 "scaling [constant|ramp] | once [N] [constant|ramp] [penrose|cgal] | "
+                 "check [N] [constant|ramp|image|terrain] [IMAGE]\n";
+    return 2;
+  }
+#if defined(CGAL_LINKED_WITH_TBB)
+  if(threads > 0) {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
+    return run<Penrose_dt<CGAL::Parallel_tag>>(argc, argv);
+  }
+#endif
+  return run<Penrose_dt<CGAL::Sequential_tag>>(argc, argv);
 }

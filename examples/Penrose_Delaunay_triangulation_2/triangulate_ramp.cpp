@@ -1,6 +1,6 @@
 // The gradient ramp of the paper's Figure 7: samples of a density that grows
 // linearly from the left edge, and their Delaunay triangulation, written as a
-// mesh file.
+// mesh file. With TBB, the construction runs as TBB tasks on every core.
 // Usage: triangulate_ramp [number_of_points] [out.off|out.ply|out.obj]
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -12,7 +12,13 @@
 #include <iostream>
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
-typedef CGAL::Penrose_Delaunay_triangulation_2<K> Triangulation;
+// Parallel_tag calls the density from several threads: a pure function is thread-safe.
+#if defined(CGAL_LINKED_WITH_TBB)
+typedef CGAL::Parallel_tag Concurrency_tag;
+#else
+typedef CGAL::Sequential_tag Concurrency_tag;
+#endif
+typedef CGAL::Penrose_Delaunay_triangulation_2<K, CGAL::Default, Concurrency_tag> Triangulation;
 
 int main(int argc, char** argv)
 {

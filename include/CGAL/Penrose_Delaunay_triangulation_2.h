@@ -8,8 +8,10 @@
 #include <CGAL/Penrose_Delaunay_triangulation_2/internal/Triangulation_construction.h>
 
 #include <CGAL/Default.h>
+#include <CGAL/assertions.h>
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/tags.h>
 
 #include <cstddef>
 #include <functional>
@@ -57,34 +59,32 @@ exact.
 It is a `Delaunay_triangulation_2<Gt, Tds>`: every operation of that class
 works on it after construction.
 
-On a machine with more than one core, a construction of at least
-2<sup>16</sup> points uses helper threads, one at a time:
-- during step 1, one that surveys the tiles of a level ahead of the
-  calling thread (the density at their new vertices, which samples are kept,
-  which children are subdivided), while the calling thread builds the mesh,
-  and, once it has surveyed a level, faults in the memory that the calling
-  thread will write there. The density (and its bound, if given) is then
-  called from that thread, in the same order as without it, and never from
-  two threads at once;
-- before step 2, one that looks for the vertices to remove among half of
-  the vertices;
-- during step 3, one that moves half of the samples, then looks for folded
-  triangles among half of the faces;
-- during step 4, one that frees the arrays that served steps 1 to 3 alone, then
-  reserves the storage of the TDS's vertices and creates its faces, empty
-  (default-constructed), one for each face of the flat mesh: most of the
-  cost of writing a TDS is the first touch of its memory;
-- while the TDS is written, one that gives half of its faces their vertices
-  and neighbours, and half of its vertices their face.
+With `ConcurrencyTag` = `Sequential_tag` (the default), the calling thread
+does all the work: no thread is started, and the density (and its bound, if
+given) is only called from it. With `Parallel_tag`, which needs TBB
+(`CGAL_LINKED_WITH_TBB`, for instance through CGAL's `CGAL::TBB_support`
+target), the construction is split into TBB tasks, run on the threads that
+TBB allows (`tbb::global_control`, `tbb::task_arena`):
+- during step 1, the tiles of each level are surveyed (the density at their
+  new vertices, which samples are kept, which children are subdivided) in
+  tasks, those of the next level while the calling thread links the
+  triangles of this one; the last level's triangles are made in two halves;
+- before step 2, the vertices to remove are looked for in two halves;
+- during step 3, the samples are moved, then folded triangles looked for,
+  in two halves;
+- during step 4, the storage of the TDS is reserved and its faces created,
+  empty, in a task beside the Lawson flips (most of the cost of writing a
+  TDS is the first touch of its memory);
+- while the TDS is written, its faces are given their vertices and
+  neighbours, and its vertices their face, in two halves.
 
-The helpers create no vertex and call neither the traits nor the lift; the
-faces' default constructor is the only code of the TDS that runs on a
-helper. They have ended when the constructor or `build()` returns or
-throws; what the density throws in the helper is rethrown to the caller.
-The triangulation is the same either way. Define
-`CGAL_PENROSE_NO_HELPER_THREAD` (or CGAL's `CGAL_HAS_NO_THREADS`) to do
-without them, for instance for a density that must be called from the
-calling thread.
+The density (and its bound) is then called from several threads at once, and
+must be thread-safe; the callback of `build()` is only called from the
+calling thread. The tasks create no vertex and call neither the traits nor
+the lift; the faces' default constructor is the only code of the TDS that
+runs in a task. The triangulation is the same whatever the tag and the
+number of threads. What the density throws in a task reaches the caller,
+once no task of the construction runs any more.
 
 A construction that would not fit in the machine's memory (its peak is
 about 220 bytes per point with the default TDS), or that has more than
@@ -96,12 +96,6 @@ then outgrow the machine's memory (about 520 bytes per vertex, once it has
 outgrown what was reserved for the points) or its 32-bit indices is refused
 in the same way before it grows, and the triangulation is left empty.
 
-On Linux, the blocks of the internal mesh (on transparent huge pages) are
-kept after a construction for the next one of the same size, about 65 bytes
-per point; a construction unmaps those it does not take back before its
-peak. Define `CGAL_PENROSE_NO_HUGE_PAGES` to allocate with `std::allocator`
-throughout.
-
 \tparam Gt a model of `DelaunayTriangulationTraits_2` with exact predicates
         (for example `Exact_predicates_inexact_constructions_kernel`,
         `Exact_predicates_exact_constructions_kernel`,
@@ -110,8 +104,11 @@ throughout.
         face bases (the construction finds its faces in their
         `Compact_container` from the order it made them in); `Default` means
         the one of `Delaunay_triangulation_2<Gt>`.
+\tparam ConcurrencyTag `Sequential_tag` (the default) or `Parallel_tag`, which
+        needs `CGAL_LINKED_WITH_TBB`.
 */
-template <class Gt = Exact_predicates_inexact_constructions_kernel, class Tds_ = Default>
+template <class Gt = Exact_predicates_inexact_constructions_kernel, class Tds_ = Default,
+          class ConcurrencyTag = Sequential_tag>
 class Penrose_Delaunay_triangulation_2
   : public Delaunay_triangulation_2<Gt, typename Default::Get<Tds_, Triangulation_data_structure_2<
                                           Triangulation_vertex_base_2<Gt>, Triangulation_face_base_2<Gt>>>::type>
@@ -119,6 +116,11 @@ class Penrose_Delaunay_triangulation_2
   typedef typename Default::Get<Tds_, Triangulation_data_structure_2<
     Triangulation_vertex_base_2<Gt>, Triangulation_face_base_2<Gt>>>::type Tds;
   typedef Delaunay_triangulation_2<Gt, Tds> Base;
+
+#if !defined(CGAL_LINKED_WITH_TBB)
+  CGAL_static_assertion_msg(!(std::is_convertible<ConcurrencyTag, Parallel_tag>::value),
+                            "Parallel_tag is enabled but TBB is unavailable.");
+#endif
 
 public:
   /// \name Types
@@ -135,6 +137,8 @@ public:
   typedef typename Base::Vertex_handle Vertex_handle;
   /// A handle to a face.
   typedef typename Base::Face_handle Face_handle;
+  /// `ConcurrencyTag`: `Sequential_tag` or `Parallel_tag`.
+  typedef ConcurrencyTag Concurrency_tag;
 
   /// What the construction did.
   struct Construction_statistics
@@ -206,8 +210,9 @@ public:
          comes from, for instance to fill the info of a vertex base with info.
   \param np an optional sequence of named parameters among:
     - `callback`: a `std::function<bool(double)>`, called regularly with the
-      advancement of the construction, in [0, 1]; if it returns `false`, the
-      construction stops and the triangulation is left empty.
+      advancement of the construction, in [0, 1], from the calling thread; if
+      it returns `false`, the construction stops and the triangulation is
+      left empty.
 
   \return `false` if `callback` stopped the construction, `true` otherwise.
   \throws std::length_error, leaving the triangulation as it was, if the
@@ -215,8 +220,8 @@ public:
   about 1.7 x 10<sup>9</sup> points; leaving it empty, if its base mesh
   would outgrow them.
   \throws what sampling throws (a bad density, tiles too fine for the
-  coordinates: see `Penrose_importance_sampler`), leaving the triangulation
-  empty.
+  coordinates: see `Penrose_importance_sampler`), and what the density
+  throws, in whichever thread, leaving the triangulation empty.
   */
   template <class SamplerTraits, class Lift, class OnVertex,
             class NamedParameters = parameters::Default_named_parameters>

@@ -6,7 +6,8 @@
 // traits classes, and the triangulation must stay valid under edits; and
 // test_triangulation<Gt, Tds>(), what the triangulation promises for any
 // traits and TDS, run over Epick, Epeck, Simple_cartesian<Gmpq>,
-// Projection_traits_xy_3<Epick> and a vertex base with info.
+// Projection_traits_xy_3<Epick> and a vertex base with info; and the same
+// triangulation, and errors, with Parallel_tag on any number of threads.
 
 #include <CGAL/Penrose_Delaunay_triangulation_2.h>
 
@@ -24,6 +25,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
@@ -40,8 +42,8 @@
 #include <utility>
 #include <vector>
 
-#if defined(__linux__)
-#  include <sched.h>
+#if defined(CGAL_LINKED_WITH_TBB)
+#  include <tbb/global_control.h>
 #endif
 
 namespace {
@@ -181,82 +183,104 @@ TEST(Triangulation, BuiltInDensitiesMatchCgal)
                           d.first + " " + std::to_string(n));
 }
 
-TEST(Triangulation, LargeEnoughForHugePagesMatchesCgal)
+TEST(Triangulation, LargeEnoughToSplitEveryWalkMatchesCgal)
 {
-  // at this size the flat mesh's arrays pass Huge_page_allocator's threshold
-  expect_same_as_cgal(Sampler(unit_square, [](const Point& p) { return 0.2 + p.x() * p.y(); },
+  // at this size every walk of the construction is split in halves
+  expect_same_as_cgal(Sampler(unit_square, [](const Point& p) { return 0.2 + p.x() * p.x() + p.y(); },
                               CGAL::parameters::number_of_output_points(400000)), "400000 points");
 }
 
-#if defined(CGAL_PENROSE_HELPER_THREADS) && defined(__linux__) && defined(CPU_COUNT)
-TEST(Triangulation, HelperThreadsChangeNothingInTheConstruction)
+#if defined(CGAL_LINKED_WITH_TBB)
+typedef CGAL::Penrose_Delaunay_triangulation_2<Epick, CGAL::Default, CGAL::Parallel_tag> Parallel_pdt;
+
+TEST(Triangulation, EveryTagAndThreadCountGivesCgalsTriangulation)
 {
-  // the last level's triangles are made in two halves, on two threads where
-  // there are two cores: confined to one core, the construction runs without
-  // helpers, and its base mesh must be the same (as many flips, removals,
-  // repairs), not only its result
-  const Sampler s(unit_square, [](const Point& p) { return 0.3 + p.x() * p.x() + p.y(); },
-                  CGAL::parameters::number_of_output_points(250000));
-  const CGAL::Penrose_Delaunay_triangulation_2<Epick> helped(s);
-  cpu_set_t all, one;
-  ASSERT_EQ(sched_getaffinity(0, sizeof(all), &all), 0);
-  CPU_ZERO(&one);
-  for(int c = 0; c < CPU_SETSIZE; ++c)
-    if(CPU_ISSET(c, &all)) {
-      CPU_SET(c, &one);
-      break;
+  // Parallel_tag on 1, 2, 3 and 8 threads gives the triangulation of
+  // Sequential_tag (the same vertices, edges and statistics: the base mesh
+  // is split the same way) and of Delaunay_triangulation_2; the callback is
+  // only called from the calling thread
+  for(const auto& d : builtin_densities()) {
+    if(d.first == "radial") continue;
+    const Sampler s(unit_square, d.second, CGAL::parameters::number_of_output_points(150000));
+    const CGAL::Penrose_Delaunay_triangulation_2<Epick> sequential(s);
+    std::vector<Point> points;
+    expect_built_as_cgal(sequential, s, d.first + " Sequential_tag", points);
+    const std::set<Edge_key> edges = edge_set(sequential, xy_of);
+    for(std::size_t threads : {1, 2, 3, 8}) {
+      const std::string what = d.first + " Parallel_tag on " + std::to_string(threads) + " threads";
+      tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+      const std::thread::id caller = std::this_thread::get_id();
+      bool called_elsewhere = false;
+      const std::function<bool(double)> callback = [&](double) {
+        called_elsewhere |= std::this_thread::get_id() != caller;
+        return true;
+      };
+      Parallel_pdt parallel;
+      ASSERT_TRUE(parallel.build(s, [](double x, double y) { return Point(x, y); },
+                                 [](Parallel_pdt::Vertex_handle, const Sampler::Sample&) {},
+                                 CGAL::parameters::callback(callback))) << what;
+      EXPECT_FALSE(called_elsewhere) << what;
+      EXPECT_TRUE(parallel.is_valid()) << what;
+      EXPECT_EQ(parallel.number_of_vertices(), sequential.number_of_vertices()) << what;
+      EXPECT_TRUE(edge_set(parallel, xy_of) == edges) << what;
+      const auto& a = parallel.construction_statistics();
+      const auto& b = sequential.construction_statistics();
+      EXPECT_EQ(a.flips, b.flips) << what;
+      EXPECT_EQ(a.base_vertices, b.base_vertices) << what;
+      EXPECT_EQ(a.removed_vertices, b.removed_vertices) << what;
+      EXPECT_EQ(a.repaired_vertices, b.repaired_vertices) << what;
+      EXPECT_EQ(a.fallbacks, b.fallbacks) << what;
     }
-  ASSERT_EQ(sched_setaffinity(0, sizeof(one), &one), 0);
-  EXPECT_FALSE(CGAL::internal::Penrose::more_than_one_core());
-  const CGAL::Penrose_Delaunay_triangulation_2<Epick> alone(s);
-  ASSERT_EQ(sched_setaffinity(0, sizeof(all), &all), 0);
-  const auto& a = helped.construction_statistics();
-  const auto& b = alone.construction_statistics();
-  EXPECT_EQ(a.flips, b.flips);
-  EXPECT_EQ(a.base_vertices, b.base_vertices);
-  EXPECT_EQ(a.removed_vertices, b.removed_vertices);
-  EXPECT_EQ(a.repaired_vertices, b.repaired_vertices);
-  EXPECT_EQ(a.fallbacks, b.fallbacks);
-  EXPECT_GT(a.flips, 0u);
-  EXPECT_TRUE(edge_set(helped, xy_of) == edge_set(alone, xy_of));
-  std::vector<Point> points;
-  s(std::back_inserter(points));
-  const CGAL::Delaunay_triangulation_2<Epick> dt(points.begin(), points.end());
-  EXPECT_TRUE(edge_set(helped, xy_of) == edge_set(dt, xy_of));
+  }
 }
 #endif
 
-TEST(Triangulation, BadDensityFoundByTheHelperThrowsAsWithout)
+namespace {
+// A density that fails partway through the tile tree (after a number of
+// calls, as the sampler's own estimates would not see a bad spot) throws
+// to the caller of `Pdt` with the sampler's message, and leaves the
+// triangulation empty and usable; once the density is good again, the same
+// sampler triangulates. Large enough for every walk to be split.
+template <class Pdt>
+void expect_bad_density_thrown_to_the_caller(const std::string& what)
 {
-  // large enough for the builder's helper thread, which calls the density:
-  // a density that fails partway through the tile tree (after a number of
-  // calls, as the sampler's own estimates would not see a bad spot) throws
-  // to the caller with the sampler's message, and leaves the triangulation
-  // usable
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  std::size_t calls = 0, good_calls = std::numeric_limits<std::size_t>::max();
+  std::atomic<std::size_t> calls{0}, good_calls{std::numeric_limits<std::size_t>::max()};
   auto density = [&calls, &good_calls, nan](const Point& q) { return ++calls > good_calls ? nan : 1. + q.x(); };
   const Sampler s(unit_square, density, CGAL::parameters::number_of_output_points(200000));
   good_calls = calls + 100000;
   std::string message;
-  CGAL::Penrose_Delaunay_triangulation_2<Epick> pdt;
+  Pdt pdt;
+  pdt.insert(Point(0.5, 0.5));
   try {
     pdt.build(s, [](double x, double y) { return Point(x, y); });
   } catch(const std::invalid_argument& e) {
     message = e.what();
   }
-  EXPECT_NE(message.find("the density at ("), std::string::npos) << message;
-  EXPECT_NE(message.find("nan"), std::string::npos) << message;
-  EXPECT_TRUE(pdt.is_valid());
+  EXPECT_NE(message.find("the density at ("), std::string::npos) << what << ": " << message;
+  EXPECT_NE(message.find("nan"), std::string::npos) << what << ": " << message;
+  EXPECT_EQ(pdt.number_of_vertices(), 0u) << what;
+  EXPECT_TRUE(pdt.is_valid()) << what;
   pdt.insert(Point(0.5, 0.5));
-  EXPECT_TRUE(pdt.is_valid());
-  // and once the density is good again, the same sampler triangulates
+  EXPECT_TRUE(pdt.is_valid()) << what;
   good_calls = std::numeric_limits<std::size_t>::max();
-  ASSERT_TRUE(pdt.build(s, [](double x, double y) { return Point(x, y); }));
+  ASSERT_TRUE(pdt.build(s, [](double x, double y) { return Point(x, y); })) << what;
   std::vector<Point> points;
   s(std::back_inserter(points));
   const CGAL::Delaunay_triangulation_2<Epick> dt(points.begin(), points.end());
-  EXPECT_TRUE(edge_set(pdt, xy_of) == edge_set(dt, xy_of));
+  EXPECT_TRUE(edge_set(pdt, xy_of) == edge_set(dt, xy_of)) << what;
+}
+} // namespace
+
+TEST(Triangulation, BadDensityThrowsToTheCallerWhateverTheTag)
+{
+  expect_bad_density_thrown_to_the_caller<CGAL::Penrose_Delaunay_triangulation_2<Epick>>("Sequential_tag");
+#if defined(CGAL_LINKED_WITH_TBB)
+  for(std::size_t threads : {2, 8}) {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+    expect_bad_density_thrown_to_the_caller<Parallel_pdt>("Parallel_tag on " + std::to_string(threads) + " threads");
+  }
+#endif
 }
 
 TEST(Triangulation, RandomSmoothDensitiesMatchCgal)
@@ -581,8 +605,8 @@ TEST(Triangulation, CallbackReportsAdvancementAndStops)
   EXPECT_TRUE(edge_set(pdt, xy_of) == edge_set(dt, xy_of));
 
   // stopped within the tile tree, as the last level's triangles begin (in
-  // two halves, the other on the helper), after the flips (while the TDS's
-  // storage is reserved) and after the TDS is written: empty, valid, and
+  // two halves), after the flips (the TDS's storage reserved) and after the
+  // TDS is written: empty, valid, and
   // usable again
   for(double limit : {0.3, 0.5, 0.7, 0.95}) {
     const std::function<bool(double)> stop = [limit](double a) { return a < limit; };

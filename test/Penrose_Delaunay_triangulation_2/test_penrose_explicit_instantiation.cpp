@@ -40,6 +40,10 @@ template class CGAL::Penrose_Delaunay_triangulation_2<Epeck>;
 template class CGAL::Penrose_Delaunay_triangulation_2<Gmpq_kernel>;
 template class CGAL::Penrose_Delaunay_triangulation_2<Terrain>;
 template class CGAL::Penrose_Delaunay_triangulation_2<Epick, Info_tds>;
+#if defined(CGAL_LINKED_WITH_TBB)
+template class CGAL::Penrose_Delaunay_triangulation_2<Epick, CGAL::Default, CGAL::Parallel_tag>;
+template class CGAL::Penrose_Delaunay_triangulation_2<Epick, Info_tds, CGAL::Parallel_tag>;
+#endif
 
 // The members instantiated above, on the smallest inputs: an empty
 // triangulation, a raster of one pixel, a sampler of a density that is zero.

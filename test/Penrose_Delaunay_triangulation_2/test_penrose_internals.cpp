@@ -4,8 +4,8 @@
 // The internals, each checked against an independent expectation: the tile
 // tree (the geometry of its tiles, their neighbours, the Fibonacci codes,
 // the importance bins, agreement with the depth-first sampler, pruning), the
-// allocators, the helper threads, the TDS reservation, the fast predicates
-// and the size checks.
+// halves and blocks of either concurrency tag, the TDS reservation, the fast
+// predicates and the size checks.
 
 #include <CGAL/Penrose_Delaunay_triangulation_2.h>
 #include <CGAL/Penrose_Delaunay_triangulation_2/internal/Tile_tree.h>
@@ -39,6 +39,12 @@ typedef CGAL::Penrose_importance_sampler<Epick> Sampler;
 typedef Epick::Point_2 Point;
 
 const Epick::Iso_rectangle_2 unit_square(0, 0, 1, 1);
+
+#if defined(CGAL_LINKED_WITH_TBB)
+typedef CGAL::Parallel_tag Parallel_if_available;
+#else
+typedef CGAL::Sequential_tag Parallel_if_available;
+#endif
 
 Tile_tree tile_tree(const Sampler& s) { return Tile_tree(Sampler_access::context(s)); }
 
@@ -78,28 +84,6 @@ Tile_tree constant_tree(double n)
 {
   return tile_tree(Sampler(unit_square, [](const Point&) { return 1.; },
                            CGAL::parameters::number_of_output_points(std::size_t(n))));
-}
-
-// Grown one element at a time, a vector of `Vector` moves from
-// std::allocator to mapped pages (aligned to `alignment` where mapped);
-// shrunk, back again. Its contents survive both moves.
-template <class Vector>
-void expect_contents_kept_across_threshold(std::uint64_t n, std::uintptr_t alignment)
-{
-  Vector v;
-  for(std::uint64_t i = 0; i < n; ++i) v.push_back(i * 0x9e3779b97f4a7c15u);
-#if defined(CGAL_PENROSE_HUGE_PAGES)
-  EXPECT_EQ(reinterpret_cast<std::uintptr_t>(v.data()) % alignment, 0u);
-#else
-  (void)alignment;
-#endif
-  std::size_t wrong = 0;
-  for(std::uint64_t i = 0; i < n; ++i) wrong += v[i] != i * 0x9e3779b97f4a7c15u;
-  EXPECT_EQ(wrong, 0u);
-  v.resize(1000);
-  v.shrink_to_fit();
-  for(std::uint64_t i = 0; i < 1000; ++i) wrong += v[i] != i * 0x9e3779b97f4a7c15u;
-  EXPECT_EQ(wrong, 0u);
 }
 
 } // namespace
@@ -336,145 +320,84 @@ TEST(Tiles, RegionPruningDropsNoSample)
   EXPECT_EQ(inside, 0u) << "of " << samples << " samples of pruned tiles";
 }
 
-TEST(Internals, HugePageAllocatorKeepsContentsAcrossItsThreshold)
+// Both halves run once, the first on the calling thread (which alone may
+// call the user's callback); what either throws reaches the caller.
+template <class ConcurrencyTag>
+void expect_halves_run_once_and_rethrow()
 {
-  expect_contents_kept_across_threshold<Large_vector<std::uint64_t>>(3000000, 1u << 21);
-}
-
-TEST(Internals, SmallPageAllocatorKeepsContentsAcrossItsThreshold)
-{
-  expect_contents_kept_across_threshold<Scratch_vector<std::uint64_t>>(1000000, 4096u);
-}
-
-TEST(Internals, HugePageAllocatorReusesAReleasedBlockUntilReleasedForGood)
-{
-  typedef Huge_page_allocator<double> Allocator;
-  const std::size_t n = 3000000;  // 24 MB
-  Allocator a;
-  double* first = a.allocate(n);
-  for(std::size_t i = 0; i < n; i += 512) first[i] = double(i);
-  a.deallocate(first, n);
-  double* second = a.allocate(n);
-#if defined(CGAL_PENROSE_HUGE_PAGES)
-  EXPECT_EQ(first, second);
-#endif
-  // whatever the kernel did with the released block, it is usable
-  std::size_t wrong = 0;
-  for(std::size_t i = 0; i < n; ++i) second[i] = double(i);
-  for(std::size_t i = 0; i < n; ++i) wrong += second[i] != double(i);
-  EXPECT_EQ(wrong, 0u);
-  a.deallocate(second, n);
-  // unmapped now: a fresh mapping reads as zeros (malloc's memory need not)
-  release_kept_blocks();
-  double* third = a.allocate(n);
-#if defined(CGAL_PENROSE_HUGE_PAGES)
-  for(std::size_t i = 0; i < n; i += 512) wrong += third[i] != 0.;
-  EXPECT_EQ(wrong, 0u);
-#endif
-  a.deallocate(third, n);
-  release_kept_blocks();
-}
-
-TEST(Internals, LookaheadWorkerHandsResultsInOrderAndRethrows)
-{
-  for(bool wanted : {false, true}) {
-    Lookahead_worker worker(wanted);
-    if(!wanted) { EXPECT_FALSE(worker.running()); }
-    const std::size_t n = 100000;
-    std::vector<std::size_t> out(n, 0);
-    for(int batch = 1; batch <= 3; ++batch) {
-      worker.start(n, [&out, batch](std::size_t b, std::size_t e) {
-        for(std::size_t k = b; k < e; ++k) out[k] = k * k + std::size_t(batch);
-      });
-      std::size_t wrong = 0;
-      for(std::size_t k = 0; k < n; ++k) {
-        worker.wait_for(k);
-        wrong += out[k] != k * k + std::size_t(batch);
-      }
-      EXPECT_EQ(wrong, 0u) << wanted << " " << batch;
-    }
-    // a job that throws at item 70000: the throw reaches the caller (at
-    // start() without a helper, which does the jobs at once; at the wait
-    // for an item of its chunk with one), and the worker goes on
-    std::string message;
-    std::size_t handed = 0;
-    try {
-      worker.start(n, [](std::size_t b, std::size_t e) {
-        for(std::size_t k = b; k < e; ++k)
-          if(k == 70000) throw std::runtime_error("item 70000");
-      });
-      for(; handed < n; ++handed) worker.wait_for(handed);
-    } catch(const std::runtime_error& e) {
-      message = e.what();
-    }
-    EXPECT_EQ(message, "item 70000") << wanted;
-    EXPECT_LE(handed, 70000u) << wanted;
-    // with a helper, the items before the chunk that threw were handed over
-    if(worker.running()) { EXPECT_GT(handed, 70000u - 1024u); }
-    worker.start(0, [](std::size_t, std::size_t) {});
-    worker.wait_for_all();
-    std::vector<int> empty_batch_seen;
-    worker.start(10, [&empty_batch_seen](std::size_t b, std::size_t e) {
-      for(std::size_t k = b; k < e; ++k) empty_batch_seen.push_back(int(k));
-    });
-    worker.wait_for_all();
-    EXPECT_EQ(empty_batch_seen.size(), 10u) << wanted;
-  }
-}
-
-TEST(Internals, TwoHalvesRunBothHalvesTheSecondOnAHelper)
-{
-  for(bool worth_a_thread : {false, true}) {
+  for(bool worth_splitting : {false, true}) {
     std::array<std::thread::id, 2> ran_on;
     std::array<int, 2> runs = {{0, 0}};
-    run_in_two_halves(worth_a_thread, [&](int half) noexcept {
+    run_in_two_halves<ConcurrencyTag>(worth_splitting, [&](int half) {
       ran_on[half] = std::this_thread::get_id();
       ++runs[half];
     });
     EXPECT_EQ(runs[0], 1);
     EXPECT_EQ(runs[1], 1);
     EXPECT_EQ(ran_on[0], std::this_thread::get_id());
-#if defined(CGAL_PENROSE_HELPER_THREADS)
-    const bool helped = worth_a_thread && more_than_one_core();
-#else
-    const bool helped = false;
-#endif
-    EXPECT_EQ(ran_on[1] != std::this_thread::get_id(), helped) << worth_a_thread;
+    if(!is_parallel<ConcurrencyTag>) { EXPECT_EQ(ran_on[1], std::this_thread::get_id()); }
+    for(int thrower : {0, 1}) {
+      const std::vector<int> found = [&] {
+        try {
+          return gather_in_two_halves<int, ConcurrencyTag>(worth_splitting, [thrower](int half, std::vector<int>& f) {
+            f.push_back(half);
+            if(half == thrower) throw std::runtime_error("half " + std::to_string(half));
+          });
+        } catch(const std::runtime_error& e) {
+          EXPECT_EQ(std::string(e.what()), "half " + std::to_string(thrower));
+          return std::vector<int>{-1};
+        }
+      }();
+      EXPECT_EQ(found, std::vector<int>{-1}) << worth_splitting << " " << thrower;
+    }
+    EXPECT_EQ((gather_in_two_halves<int, ConcurrencyTag>(worth_splitting, [](int half, std::vector<int>& f) {
+                f.assign(3, half);
+              })),
+              (std::vector<int>{0, 0, 0, 1, 1, 1}));
   }
 }
 
-TEST(Internals, TdsReservationReleasesThenMakesTheFacesOnAHelper)
+TEST(Internals, TwoHalvesRunOnceInOrderAndRethrow)
+{
+  expect_halves_run_once_and_rethrow<CGAL::Sequential_tag>();
+#if defined(CGAL_LINKED_WITH_TBB)
+  expect_halves_run_once_and_rethrow<CGAL::Parallel_tag>();
+#endif
+}
+
+TEST(Internals, BlocksCoverEveryItemOnce)
+{
+  const std::size_t n = 100000;
+  std::vector<int> seen(n, 0);
+  auto mark = [&seen](std::size_t b, std::size_t e) {
+    for(std::size_t k = b; k < e; ++k) ++seen[k];
+  };
+  for_each_block<CGAL::Sequential_tag>(n, 1000, mark);
+#if defined(CGAL_LINKED_WITH_TBB)
+  for_each_block<CGAL::Parallel_tag>(n, 1000, mark);
+  const int runs = 2;
+#else
+  const int runs = 1;
+#endif
+  EXPECT_EQ(std::count(seen.begin(), seen.end(), runs), std::ptrdiff_t(n));
+}
+
+TEST(Internals, TdsReservationMakesTheFacesInOrder)
 {
   typedef CGAL::Penrose_Delaunay_triangulation_2<Epick>::Triangulation_data_structure Tds;
   typedef Tds_reservation<Tds> Reservation;
-  const std::size_t large = Reservation::least_vertices, small = large - 1;
-#if defined(CGAL_PENROSE_HELPER_THREADS)
-  const bool helped = more_than_one_core();
-#else
-  const bool helped = false;
-#endif
-  for(const std::size_t n : {small, large}) {
-    const std::size_t faces = 2 * n - 3;  // odd: the first half is the shorter
-    std::thread::id released_on;
-    Reservation reservation(n, faces, [&released_on] { released_on = std::this_thread::get_id(); });
-    const bool prepared = reservation.prepared();
-    const Reservation::Faces& made = reservation.faces();
-    const Tds& tds = reservation.tds();
-    EXPECT_EQ(prepared, helped && n == large) << n;
-    // the release always runs, on the helper where there is one
-    EXPECT_EQ(released_on == std::this_thread::get_id(), !prepared);
-    EXPECT_EQ(tds.number_of_vertices(), 0u);
-    EXPECT_EQ(tds.vertices().capacity() >= n, prepared);
-    EXPECT_EQ(tds.faces().size(), prepared ? faces : 0u);
-    EXPECT_EQ(made.size(), prepared ? faces : 0u);
-    if(prepared) {
-      // the k-th face made is the k-th of the container, and empty
-      std::size_t k = 0;
-      for(auto f = tds.faces().begin(); f != tds.faces().end(); ++f, ++k) {
-        EXPECT_EQ(made[k], Tds::Face_handle(f));
-        EXPECT_EQ(f->vertex(0), Tds::Vertex_handle());
-      }
-    }
+  const std::size_t n = 70000, faces = 2 * n - 3;
+  const Reservation reservation(n, faces);
+  const Tds& tds = reservation.tds;
+  EXPECT_EQ(tds.number_of_vertices(), 0u);
+  EXPECT_GE(tds.vertices().capacity(), n);
+  EXPECT_EQ(tds.faces().size(), faces);
+  EXPECT_EQ(reservation.made.size(), faces);
+  // the k-th face made is the k-th of the container, and empty
+  std::size_t k = 0;
+  for(auto f = tds.faces().begin(); f != tds.faces().end(); ++f, ++k) {
+    EXPECT_EQ(reservation.made[k], Tds::Face_handle(f));
+    EXPECT_EQ(f->vertex(0), Tds::Vertex_handle());
   }
 }
 
@@ -551,9 +474,9 @@ TEST(Internals, BaseMeshThatWouldOutgrowMemoryIsRefusedBeforeItGrows)
 {
   // a density bound 64 times the density refines tiles that hold no point,
   // and the mesh outgrows what was reserved for the points: a builder
-  // allowed 64 MiB refuses to grow it past them, with its
-  // helper thread and without (2^16 points and up), and a mesh that stays
-  // within what was reserved is not refused
+  // allowed 64 MiB refuses to grow it past them, with either tag (the
+  // Parallel_tag surveys tiles in tasks), and a mesh that stays within what
+  // was reserved is not refused
   const double budget = 64. * (1 << 20);
   auto one = [](const Point&) { return 1.; };
   auto loose = [](const Epick::Iso_rectangle_2&) { return 64.; };
@@ -564,7 +487,8 @@ TEST(Internals, BaseMeshThatWouldOutgrowMemoryIsRefusedBeforeItGrows)
     Base_triangulation_builder builder(Sampler_access::context(s), mesh, false, budget);
     std::string message = "not refused";
     try {
-      builder.build(s.expected_number_of_points(), std::function<bool(double)>());
+      if(n < 50000) builder.build<CGAL::Sequential_tag>(s.expected_number_of_points(), std::function<bool(double)>());
+      else builder.build<Parallel_if_available>(s.expected_number_of_points(), std::function<bool(double)>());
     } catch(const std::length_error& e) {
       message = e.what();
     }
@@ -575,7 +499,7 @@ TEST(Internals, BaseMeshThatWouldOutgrowMemoryIsRefusedBeforeItGrows)
     const Sampler tight(unit_square, one, CGAL::parameters::number_of_output_points(n));
     Flat_mesh fitting;
     EXPECT_TRUE(Base_triangulation_builder(Sampler_access::context(tight), fitting, false, budget)
-                  .build(tight.expected_number_of_points(), std::function<bool(double)>())) << n;
+                  .build<Parallel_if_available>(tight.expected_number_of_points(), std::function<bool(double)>())) << n;
     EXPECT_GT(fitting.points.size(), n / 2) << n;
   }
 }

@@ -23,22 +23,19 @@
 // before new faces are appended, so that no face stays empty.
 //
 // What each tile's subdivision decides from the importance field alone (its
-// survey) is apart from the mesh: a helper thread, where there is one,
-// surveys a level's tiles ahead of the thread that builds the mesh, then
-// faults in the fresh memory that this thread will write for that level. On
-// the last level, which leaves it nothing to survey while the triangles are
-// made, it makes those of half of the tiles.
+// survey) is apart from the mesh. With Sequential_tag each tile is surveyed
+// as its vertices are made. With Parallel_tag a level's tiles are surveyed
+// in TBB tasks, those of the next level while the calling thread links this
+// level's triangles, and the last level's triangles are made in two halves.
 
 #ifndef CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_BASE_TRIANGULATION_BUILDER_H
 #define CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_BASE_TRIANGULATION_BUILDER_H
 
+#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Concurrency.h>
 #include <CGAL/Penrose_Delaunay_triangulation_2/internal/Flat_mesh.h>
-#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Huge_page_allocator.h>
-#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Lookahead_worker.h>
 #include <CGAL/Penrose_Delaunay_triangulation_2/internal/Sampling_context.h>
 #include <CGAL/Penrose_Delaunay_triangulation_2/internal/Size_limits.h>
 #include <CGAL/Penrose_Delaunay_triangulation_2/internal/Split_patterns.h>
-#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Two_halves.h>
 
 #include <CGAL/assertions.h>
 
@@ -74,7 +71,7 @@ public:
 
   // Where each vertex of the mesh goes: its corrected position if it is an
   // active sample that lands in the region, NaN otherwise (to be removed).
-  Scratch_vector<std::pair<double, double>> take_targets() { return std::move(target_); }
+  std::vector<std::pair<double, double>> take_targets() { return std::move(target_); }
 
   // The sample at kept vertex v, with the data of its leaf tile; needs
   // `record_births`.
@@ -100,9 +97,12 @@ public:
   // `expected_points` sizes the arrays once: growing them level after level
   // would fault fresh pages in at every reallocation. `progress(f)`, if set,
   // is called now and then with an estimate f in [0, 1) of the work done;
-  // the build stops, returning false, as soon as it returns false.
+  // the build stops, returning false, as soon as it returns false; it is
+  // called from the calling thread only.
+  template <class ConcurrencyTag>
   bool build(double expected_points, const std::function<bool(double)>& progress)
   {
+    constexpr bool surveyed_apart = is_parallel<ConcurrencyTag>;
     expected_points_ = expected_points;
     const std::size_t n = vertex_capacity(expected_points);
     m_.points.reserve(n); m_.vertex_face.reserve(n);
@@ -113,9 +113,7 @@ public:
     // (untouched pages cost nothing): a level's children are written over its
     // grandparents, in pages already faulted in.
     frontier_.reserve(n); next_.reserve(n); work_.reserve(n);
-    Lookahead_worker helper(expected_points >= least_points_for_helper);
-    const bool surveyed_ahead = helper.running();
-    if(surveyed_ahead) surveys_.reserve(n);
+    if(surveyed_apart) surveys_.reserve(n);
     for(int i = 0; i < 3; ++i) add_vertex(c_.root_x(i), c_.root_y(i), c_.importance(c_.root_x(i), c_.root_y(i)));
     frontier_base_ = m_.create_face(0, 1, 2);
     const Tile root(0, 0, FAT_F, 15, {{0, 1, 2}});
@@ -132,21 +130,26 @@ public:
       work_.assign(frontier_.size(), Work());
       next_.clear();
       const double done = double(tiles_done), half = 0.5 * double(frontier_.size());
-      if(surveyed_ahead && level == 0) start_surveys(helper, frontier_, next_, level);
-      const bool completed =
+      if(surveyed_apart && level == 0) survey_level<ConcurrencyTag>(frontier_, level);
+      bool completed =
         for_each_tile(0, frontier_.size(), [&](std::size_t k) { return report(done + 0.5 * k); },
-                      [this, surveyed_ahead](const Tile& t) { if(!surveyed_ahead) fetch_corners(t, corners()); },
-                      [this, &helper, surveyed_ahead, level](std::size_t k) {
-                        if(!surveyed_ahead) { create_vertices(k, level, survey(c_, frontier_[k], level, corners()), helper); return; }
-                        helper.wait_for(k, [this, k] { return populate_surveys_ahead_of(k); });
-                        create_vertices(k, level, surveys_[k], helper);
-                      }) &&
+                      [this](const Tile& t) { if(!surveyed_apart) fetch_corners(t, corners()); },
+                      [this, level](std::size_t k) {
+                        if constexpr(surveyed_apart) create_vertices(k, level, surveys_[k]);
+                        else create_vertices(k, level, survey(c_, frontier_[k], level, corners()));
+                      });
+      if(completed) {
+        next_base_ = m_.append_faces(next_.size());
+        auto link_triangles = [&] {
+          auto proceed = [&](std::size_t k) { return report(done + half + 0.5 * k); };
+          completed = (next_.empty() && frontier_.size() >= least_size_for_two_halves)
+                        ? create_last_triangles_in_halves<ConcurrencyTag>(proceed)
+                        : create_level_triangles(proceed);
+        };
         // the next level's tiles are all known: surveyed while this level's triangles are linked
-        (!surveyed_ahead || start_surveys(helper, next_, frontier_, level + 1)) &&
-        (next_base_ = m_.append_faces(next_.size()), true) &&
-        ((next_.empty() && frontier_.size() >= least_size_for_two_halves)
-           ? create_last_triangles_in_halves(helper, [&](std::size_t k) { return report(done + half + 0.5 * k); })
-           : create_level_triangles([&](std::size_t k) { return report(done + half + 0.5 * k); }));
+        if(surveyed_apart) run_beside<ConcurrencyTag>([&] { survey_level<ConcurrencyTag>(next_, level + 1); }, link_triangles);
+        else link_triangles();
+      }
       if(!completed) return false;
       tiles_done += frontier_.size();
       frontier_.swap(next_);
@@ -205,11 +208,10 @@ private:
   // apart from the mesh: the importance at its new vertices, whether its
   // sample is kept and where it goes, and which children are subdivided
   // further. Not where the new vertices are: recomputed where they enter the
-  // mesh, they spare the helper, which the last levels wait for, 32 bytes of
-  // fresh memory per tile.
+  // mesh, they spare the surveys 32 bytes of fresh memory per tile.
   struct Survey
   {
-    Survey() {}  // left as it is: the helper writes every survey before it is read
+    Survey() {}  // left as it is: every survey is written before it is read
 
     std::array<double, 2> importance;        // at new vertex n
     double target_x, target_y;               // of the sample, if kept
@@ -239,119 +241,31 @@ private:
   static constexpr double vertex_margin = 1.25;
   static constexpr std::size_t extra_vertices = 64;
 
-  // Below this many points a helper thread costs more than it saves.
-  static constexpr double least_points_for_helper = double(std::size_t(1) << 16);
-
-  // Hands the helper the surveys of the tiles of `level`, to be written in
-  // surveys_. Its jobs read the tiles, and the points and importances of
-  // their corners, all of them written before; the caller meanwhile only
-  // appends vertices and writes the tiles' faces. The children of `tiles`
-  // will be written in `children`. Returns true.
-  bool start_surveys(Lookahead_worker& helper, const Scratch_vector<Tile>& tiles, const Scratch_vector<Tile>& children,
-                     int level)
+  // Surveys the tiles of `level` into surveys_, in independent blocks: with
+  // Parallel_tag the density is then called from TBB's threads. A block
+  // reads nothing through this builder or the mesh: the calling thread may
+  // write the ends of their vectors meanwhile, and a read of a word beside
+  // them would move that cache line between the cores at each tile (false
+  // sharing). The tiles, and the points and importances of their corners,
+  // are written before and not meanwhile.
+  template <class ConcurrencyTag>
+  void survey_level(const std::vector<Tile>& tiles, int level)
   {
     if(surveys_.size() < tiles.size()) surveys_.resize(tiles.size());
     const Tile* t = tiles.data();
     Survey* s = surveys_.data();
-    const std::size_t n = tiles.size();
-    // The job reads nothing through this builder or the mesh: the calling
-    // thread writes the ends of their vectors at every vertex, and a read of
-    // a word beside them would move that cache line between the cores at
-    // each tile (false sharing, which slowed the whole base mesh).
     const Corners corners = this->corners();
     const Sampling_context* context = &c_;
-    // what the surveys foresee of phase 1, for the helper's idle job
-    const std::shared_ptr<Phase_1_writes> writes = std::make_shared<Phase_1_writes>();
-    helper.start(n, [corners, context, t, s, n, level, writes](std::size_t b, std::size_t e) {
-      std::size_t children = 0, vertices = 0;
+    for_each_block<ConcurrencyTag>(tiles.size(), survey_grain, [=](std::size_t b, std::size_t e) {
       for(std::size_t k = b; k < e; ++k) {
-        if(k + ahead < n) fetch_corners(t[k + ahead], corners);
+        if(k + ahead < e) fetch_corners(t[k + ahead], corners);
         s[k] = survey(*context, t[k], level, corners);
-        const unsigned refined = s[k].refined_children;
-        children += (refined & 1u) + (refined >> 1 & 1u) + (refined >> 2 & 1u);
-        vertices += refined != 0 ? std::size_t(rule(t[k].tile_type()).number_of_new_vertices) : std::size_t(s[k].kept);
       }
-      writes->children += children;
-      writes->vertices += vertices;
-    }, fresh_pages_of_phase_1(children, writes));
-    return true;
+    });
   }
 
-  // The children that phase 1 of a level will write, and at most how many
-  // new vertices (two a tile), counted by the surveys on the helper.
-  struct Phase_1_writes
-  {
-    std::size_t children = 0, vertices = 0;
-  };
-
-  // The helper's idle job once it has surveyed a level, while the calling
-  // thread consumes the surveys in phase 1 of that level: it faults in the
-  // fresh pages that the calling thread will write there, the children and
-  // the new vertices' importances and targets, then those of the next
-  // level's work array. Each range is faulted in from its end, towards the
-  // calling thread, which writes it from its start, so that the calling
-  // thread takes fewer of the base mesh's page faults itself.
-  Lookahead_worker::Idle_step fresh_pages_of_phase_1(const Scratch_vector<Tile>& children,
-                                                     const std::shared_ptr<Phase_1_writes>& writes)
-  {
-    struct Bytes
-    {
-      char* data;
-      std::size_t in_use, capacity;  // in_use: bytes already written once
-    };
-    auto bytes = [](const auto& v) {
-      typedef typename std::decay_t<decltype(v)>::value_type T;
-      return Bytes{reinterpret_cast<char*>(const_cast<T*>(v.data())), v.size() * sizeof(T), v.capacity() * sizeof(T)};
-    };
-    const std::array<Bytes, 4> arrays = {{bytes(children), bytes(importance_), bytes(target_), bytes(work_)}};
-    // what is left to fault in, array by array: [begin, end)
-    std::array<std::pair<char*, char*>, 4> left;
-    bool sized = false;
-    return [=]() mutable {
-      constexpr std::size_t step = std::size_t(1) << 18;
-      if(!sized) {
-        const std::array<std::size_t, 4> needed = {{writes->children * sizeof(Tile),
-                                                    arrays[1].in_use + writes->vertices * sizeof(double),
-                                                    arrays[2].in_use + writes->vertices * sizeof(std::pair<double, double>),
-                                                    writes->children * sizeof(Work)}};
-        for(int a = 0; a < 4; ++a) {
-          const Bytes& b = arrays[a];
-          char* const end = b.data + (std::min)(needed[a], b.capacity);
-          left[a] = {(std::min)(b.data + b.in_use, end), end};
-        }
-        sized = true;
-      }
-      for(auto& [begin, end] : left) {
-        if(begin == end) continue;
-        char* const from = end - (std::min)(step, std::size_t(end - begin));
-        if(!populate_pages(from, end)) return false;
-        end = from;
-        return true;
-      }
-      return false;
-    };
-  }
-
-  // While the calling thread waits for the survey of tile k, it faults in
-  // the next fresh pages that the helper's surveys will write, at this level
-  // or the next: where the calling thread waits, the helper is what the base
-  // mesh waits for, and its page faults are spared (7.4 MB of pages in
-  // a construction of 10^6 points of constant density, 1.7 MB for the ramp).
-  // False once there is nothing left to fault in for now.
-  bool populate_surveys_ahead_of(std::size_t k)
-  {
-    constexpr std::size_t step = std::size_t(1) << 14;  // short: the helper may be done meanwhile
-    if(!can_populate_) return false;
-    // beyond the chunk that the helper is writing now
-    const std::size_t from = (std::max)(surveys_populated_, (k + 256) * sizeof(Survey));
-    const std::size_t to = (std::min)((std::max)(frontier_.size(), next_.size()), surveys_.capacity()) * sizeof(Survey);
-    if(from >= to) return false;
-    const char* const base = reinterpret_cast<const char*>(surveys_.data());
-    const std::size_t end = (std::min)(from + step, to);
-    can_populate_ = populate_pages(base + from, base + end);
-    surveys_populated_ = end;
-    return can_populate_;
-  }
+  // tiles per task: a few hundred microseconds of work
+  static constexpr std::size_t survey_grain = 1024;
 
   // The points and importances of the vertices, which a survey reads at a
   // tile's corners; valid while the vertex arrays keep their capacity.
@@ -473,9 +387,9 @@ private:
     return completed;
   }
 
-  // Phase 2 of the last level, which has no children (the helper is idle
-  // then): the tiles in two halves of the frontier, the second on the
-  // helper. Two tiles of different halves may not write the same faces or
+  // Phase 2 of the last level, which has no children, so that nothing is
+  // surveyed meanwhile: the tiles in two halves of the frontier, beside each
+  // other with Parallel_tag. Two tiles of different halves may not write the same faces or
   // vertices, which they could only do through a vertex that both touch
   // (a corner of either, or a vertex of a leaf face across an edge of
   // either): each half first marks the vertices that its tiles touch, and
@@ -484,8 +398,8 @@ private:
   // vertex marked by the other, which are postponed, keeping their faces,
   // and done last, in order. Deterministic: the mesh is the same whether the
   // halves run on two threads or one after the other.
-  template <class Proceed>
-  bool create_last_triangles_in_halves(Lookahead_worker& helper, const Proceed& proceed)
+  template <class ConcurrencyTag, class Proceed>
+  bool create_last_triangles_in_halves(const Proceed& proceed)
   {
     const std::size_t n = frontier_.size(), vertices = m_.points.size();
     // left uninitialized here, to be cleared by the halves
@@ -493,7 +407,7 @@ private:
                                                              std::unique_ptr<unsigned char[]>(new unsigned char[vertices])}};
     const std::unique_ptr<unsigned char[]> postponed_tile(new unsigned char[n]);
     std::array<Faces_needed, 2> needed;
-    helper.run_in_two_halves([&](int h) {
+    run_in_two_halves<ConcurrencyTag>(true, [&](int h) {
       std::fill_n(marks[h].get(), vertices, 0);
       const Half_range tiles = half_of(n, h);
       std::fill(postponed_tile.get() + tiles.begin, postponed_tile.get() + tiles.end, 0);
@@ -514,7 +428,7 @@ private:
 
     std::array<std::vector<std::pair<std::size_t, Face_supply>>, 2> postponed;  // tile, supply before it
     bool completed = true;
-    helper.run_in_two_halves([&](int h) {
+    run_in_two_halves<ConcurrencyTag>(true, [&](int h) {
       const unsigned char* other = marks[1 - h].get();
       // the halves' own copies: sharing a cache line, the two would take turns at it
       Face_supply s = supply[h];
@@ -670,7 +584,7 @@ private:
   // subdivided child (of this tile or of the one across); the two tiles of
   // an edge survey its vertex alike (the same doubles from the same
   // operands).
-  void create_vertices(std::size_t k, int level, const Survey& s, Lookahead_worker& helper)
+  void create_vertices(std::size_t k, int level, const Survey& s)
   {
     const Tile& t = frontier_[k];
     Work& w = work_[k];
@@ -681,7 +595,7 @@ private:
       const New_vertex_rule& nv = r.new_vertices[n];
       Index& x = w.new_vertices[slot(nv.edge)];
       if(nv.is_sample && s.kept) {
-        if(x == null) add_new_vertex(k, n, s.importance[n], helper);
+        if(x == null) add_new_vertex(k, n, s.importance[n]);
         target_[x] = {s.target_x, s.target_y};
         if(record_births_) birth_[x] = sample_birth(t, r, child_level);
       }
@@ -693,7 +607,7 @@ private:
       std::array<Index, 3> corners;
       for(int i = 0; i < 3; ++i) {
         const int j = cr.corners[i];
-        if(v[j] == null) v[j] = add_new_vertex(k, j - 3, s.importance[j - 3], helper);
+        if(v[j] == null) v[j] = add_new_vertex(k, j - 3, s.importance[j - 3]);
         corners[i] = v[j];
       }
       next_.emplace_back(t.code * 4 + cr.code_pair, child_threshold(t, cr, child_level), cr.type,
@@ -706,13 +620,9 @@ private:
 
   // Adds new vertex n of tile k, for it and for the tile across its edge,
   // if that one is subdivided at this level too.
-  Index add_new_vertex(std::size_t k, int n, double importance, Lookahead_worker& helper)
+  Index add_new_vertex(std::size_t k, int n, double importance)
   {
-    // the helper's surveys read the points and importances: they must not move under it
-    if(m_.points.size() == m_.points.capacity() || importance_.size() == importance_.capacity()) {
-      check_room_to_double();
-      helper.wait_until_idle();
-    }
+    if(m_.points.size() == m_.points.capacity() || importance_.size() == importance_.capacity()) check_room_to_double();
     const Tile& t = frontier_[k];
     const New_vertex_rule& nv = rule(t.tile_type()).new_vertices[n];
     const int e = nv.edge;
@@ -845,17 +755,12 @@ private:
   const bool record_births_;
   const double memory_;
   double expected_points_ = 0.;
-  // The builder's own arrays are on small pages, unlike the mesh's: they
-  // serve this build only, and fresh huge pages may cost a host fault each on
-  // a virtual machine (see Huge_page_allocator.h).
-  Scratch_vector<Sample_birth> birth_;  // with record_births_ only
-  Scratch_vector<Tile> frontier_, next_;
-  Scratch_vector<Work> work_;          // for the tiles of frontier_
-  Scratch_vector<Survey> surveys_;     // for the tiles of frontier_, by the helper
-  std::size_t surveys_populated_ = 0;  // bytes of surveys_ faulted in, unless surveys_ grew since
-  bool can_populate_ = true;
-  Scratch_vector<double> importance_;   // per vertex, at the nearest point of the region
-  Scratch_vector<std::pair<double, double>> target_;  // see take_targets()
+  std::vector<Sample_birth> birth_;  // with record_births_ only
+  std::vector<Tile> frontier_, next_;
+  std::vector<Work> work_;          // for the tiles of frontier_
+  std::vector<Survey> surveys_;     // for the tiles of frontier_, with Parallel_tag
+  std::vector<double> importance_;   // per vertex, at the nearest point of the region
+  std::vector<std::pair<double, double>> target_;  // see take_targets()
   Index frontier_base_ = 0, next_base_ = 0;  // the faces of the tiles of frontier_ and next_
   std::vector<Index> given_up_;       // at this level, to be taken over at the next
   std::vector<Index> recycled_;       // given up at the levels before, not yet taken

@@ -10,7 +10,7 @@
 // consecutive addresses: those runs are recorded as the elements are made,
 // whatever the container does, and indexed by buckets of ranks.
 //
-// A construction makes the TDS's faces (empty, on a helper) in the order of
+// A construction makes the TDS's faces (empty, beside the flips) in the order of
 // the flat mesh's faces: the TDS face of a flat face, or of a face across,
 // is then known before any of them is written, and the faces get their
 // vertices and neighbours in one walk.

@@ -10,7 +10,6 @@
 #define CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_FLAT_MESH_H
 
 #include <CGAL/Penrose_Delaunay_triangulation_2/internal/Fast_predicates.h>
-#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Huge_page_allocator.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/assertions.h>
@@ -58,11 +57,11 @@ public:
   static int cw(int i) { return i == 0 ? 2 : i - 1; }
 
   // vertices, their coordinates in one array for locality
-  Large_vector<Point> points;
-  Large_vector<Index> vertex_face;  // one incident face, or null for a removed vertex
+  std::vector<Point> points;
+  std::vector<Index> vertex_face;  // one incident face, or null for a removed vertex
 
-  Large_vector<Face> faces;
-  Large_vector<char> face_alive;
+  std::vector<Face> faces;
+  std::vector<char> face_alive;
 
   // the faces alive
   std::size_t number_of_faces() const { return faces.size() - free_.size(); }

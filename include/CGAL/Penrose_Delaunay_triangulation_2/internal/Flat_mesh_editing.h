@@ -12,7 +12,7 @@
 #define CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_FLAT_MESH_EDITING_H
 
 #include <CGAL/Penrose_Delaunay_triangulation_2/internal/Flat_mesh.h>
-#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Two_halves.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Concurrency.h>
 
 #include <algorithm>
 #include <array>
@@ -98,20 +98,22 @@ public:
   // copy of the positions is needed for the way back: on return `target`
   // holds their former positions, and still the targets of the vertices
   // that went back (moved one at a time, or returned).
-  template <class Targets>
+  // With Parallel_tag, the moves at once and the search for folds run in
+  // two halves beside each other.
+  template <class ConcurrencyTag, class Targets>
   std::vector<Index> move_vertices(Targets& target, std::size_t& repaired)
   {
     const std::size_t n = m_.points.size();
-    Large_vector<char> state(n, 0);  // 1: moved, 2: sent back
+    std::vector<char> state(n, 0);  // 1: moved, 2: sent back
     auto trade = [&](Index v) {
       const Flat_mesh::Point p = m_.points[v];
       m_.points[v] = Flat_mesh::Point(target[v].first, target[v].second);
       target[v] = {p.x(), p.y()};
     };
     // The moves at once, and the search for folds, read or write each
-    // vertex's or face's own data: they take two threads, in halves.
-    const bool worth_a_thread = n >= least_size_for_two_halves;
-    run_in_two_halves(worth_a_thread, [&](int half) {
+    // vertex's or face's own data: they can be split in halves.
+    const bool worth_splitting = n >= least_size_for_two_halves;
+    run_in_two_halves<ConcurrencyTag>(worth_splitting, [&](int half) {
       const Half_range vertices = half_of(target.size(), half);
       for(std::size_t v = vertices.begin; v < vertices.end; ++v)
         if(!std::isnan(target[v].first) && m_.vertex_face[v] != null &&
@@ -120,7 +122,7 @@ public:
           state[v] = 1;
         }
     });
-    std::vector<Index> folded = gather_in_two_halves<Index>(worth_a_thread, [&](int half, std::vector<Index>& found) {
+    std::vector<Index> folded = gather_in_two_halves<Index, ConcurrencyTag>(worth_splitting, [&](int half, std::vector<Index>& found) {
       const Half_range faces = half_of(m_.faces.size(), half);
       const Index end = Index(faces.end);
       for(Index f = Index(faces.begin); f < end; ++f) {

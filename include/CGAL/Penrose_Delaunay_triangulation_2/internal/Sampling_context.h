@@ -25,8 +25,8 @@
 
 // For the few functions that every tile's refinement calls: Clang 14 leaves
 // them out of line, which makes the sampler about a tenth slower than with
-// them inlined (the construction, whose surveys call them on a helper
-// thread, much less). G++ 12 inlines them on its own.
+// them inlined (the construction, whose surveys call them apart from the
+// mesh, much less). G++ 12 inlines them on its own.
 #if defined(__clang__)
 #  define CGAL_PENROSE_HOT_INLINE __attribute__((always_inline)) inline
 #else

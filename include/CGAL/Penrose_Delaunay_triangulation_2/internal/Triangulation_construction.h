@@ -5,7 +5,10 @@
 // documentation): the base mesh of the tile tree, framed; the vertices that
 // are not samples removed; the samples moved; Lawson flips; the flat mesh
 // written into the TDS; what local repair could not place left to insert()
-// and remove().
+// and remove(). With Parallel_tag, the walks that are bound by memory run in
+// two halves, and the TDS's storage is made beside the flips (see
+// Concurrency.h and Tds_reservation.h); the base mesh's builder runs the
+// density in tasks of its own.
 
 #ifndef CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_TRIANGULATION_CONSTRUCTION_H
 #define CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_TRIANGULATION_CONSTRUCTION_H
@@ -17,7 +20,7 @@
 #include <CGAL/Penrose_Delaunay_triangulation_2/internal/Flat_mesh_editing.h>
 #include <CGAL/Penrose_Delaunay_triangulation_2/internal/Sampler_access.h>
 #include <CGAL/Penrose_Delaunay_triangulation_2/internal/Tds_reservation.h>
-#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Two_halves.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Concurrency.h>
 
 #include <CGAL/assertions.h>
 
@@ -39,6 +42,7 @@ class Triangulation_construction
   typedef typename Triangulation::Triangulation_data_structure Tds;
   typedef typename Triangulation::Vertex_handle Vertex_handle;
   typedef typename Triangulation::Face_handle Face_handle;
+  typedef typename Triangulation::Concurrency_tag Concurrency_tag;
   typedef Flat_mesh::Index Index;
   typedef Tds_reservation<Tds> Reservation;
 
@@ -66,15 +70,14 @@ public:
     stats = Statistics();
     Flat_mesh mesh;
     // where each sample of the region goes; NaN for the vertices to remove (freed with the builder)
-    Scratch_vector<std::pair<double, double>> target;
+    std::vector<std::pair<double, double>> target;
     std::vector<std::pair<Index, Placed_sample>> placed;  // for on_vertex only
-    // freed by the TDS reservation's helper, where there is one
-    std::optional<Base_triangulation_builder> builder;
+    std::optional<Base_triangulation_builder> builder;  // freed before the TDS grows
     builder.emplace(context, mesh, visits);
     {
       std::function<bool(double)> progress;
       if(callback) progress = [&callback](double f) { return callback(0.58 * f); };
-      if(!builder->build(sampler.expected_number_of_points(), progress)) return abandon();
+      if(!builder->build<Concurrency_tag>(sampler.expected_number_of_points(), progress)) return abandon();
       target = builder->take_targets();
       if(visits)
         for(Index v = 0; v < target.size(); ++v)
@@ -88,25 +91,23 @@ public:
     const std::vector<Index> inactive = inactive_vertices(mesh, n, kept, stats.base_vertices);
     const std::vector<Index> stuck = editor.remove_vertices(inactive, stats.removed_vertices);
     if(!proceed(0.61)) return abandon();
-    const std::vector<Index> unplaced = editor.move_vertices(target, stats.repaired_vertices);
+    const std::vector<Index> unplaced = editor.template move_vertices<Concurrency_tag>(target, stats.repaired_vertices);
     if(!proceed(0.66)) return abandon();
 
     // keep of the targets only what is still needed: the rest is freed before the TDS grows
     std::vector<std::pair<double, double>> unplaced_target;
     for(Index v : unplaced) unplaced_target.push_back(target[v]);
+    builder.reset();
+    decltype(target)().swap(target);
     // the TDS will have at most `live` finite vertices and the infinite one,
     // and a face for each flat one
     const std::size_t live = stats.base_vertices + frame.size() - stats.removed_vertices;
-    // blocks kept from an earlier construction and not taken by this one would add to its peak
-    release_kept_blocks();
-    Reservation reservation(live + 1, mesh.faces.size(), [&builder, &target] {
-      builder.reset();
-      decltype(target)().swap(target);
-    });
-    stats.flips = make_delaunay(mesh);
+    std::optional<Reservation> reservation;
+    run_beside<Concurrency_tag>([&] { reservation.emplace(live + 1, mesh.faces.size()); },
+                                [&] { stats.flips = make_delaunay(mesh); });
     if(!proceed(0.84)) return abandon();
 
-    auto handle = write_tds(tr, mesh, lift, reservation, frame[0]);
+    auto handle = write_tds(tr, mesh, lift, *reservation, frame[0]);
     mesh = Flat_mesh();
     if(!proceed(0.99)) return abandon();
     for(Index v : stuck) tr.remove(handle[v]);
@@ -134,12 +135,12 @@ private:
 
   // The vertices among the first `n` of the mesh that are in it and not
   // `kept`, in order; `in_mesh` counts those in it. A walk over every vertex,
-  // bound by memory, so it is done in halves on two threads.
+  // bound by memory, so it is done in halves.
   template <class Kept>
   static std::vector<Index> inactive_vertices(const Flat_mesh& mesh, std::size_t n, const Kept& kept, std::size_t& in_mesh)
   {
     std::array<std::size_t, 2> count = {{0, 0}};
-    std::vector<Index> inactive = gather_in_two_halves<Index>(
+    std::vector<Index> inactive = gather_in_two_halves<Index, Concurrency_tag>(
       n >= least_size_for_two_halves, [&](int half, std::vector<Index>& found) {
         std::size_t present = 0;
         const Half_range vertices = half_of(n, half);
@@ -214,23 +215,21 @@ private:
   // `tr`; the mesh's coordinates are released as soon as the TDS
   // vertices hold them.
   template <class Lift>
-  static Large_vector<Vertex_handle> write_tds(Triangulation& tr, Flat_mesh& m, const Lift& lift,
+  static std::vector<Vertex_handle> write_tds(Triangulation& tr, Flat_mesh& m, const Lift& lift,
                                                Reservation& reservation, Index on_boundary)
   {
     constexpr std::size_t ahead = Flat_mesh::fetch_distance;
-    // the vertices first, while the helper may still make the faces
-    Tds& prepared_tds = reservation.tds_for_vertices();
+    Tds& prepared_tds = reservation.tds;
     const Vertex_handle infinite = prepared_tds.create_vertex();
-    Large_vector<Vertex_handle> vh(m.vertex_face.size());
+    std::vector<Vertex_handle> vh(m.vertex_face.size());
     for(std::size_t v = 0; v < vh.size(); ++v)
       if(m.vertex_face[v] != Flat_mesh::null) {
         vh[v] = prepared_tds.create_vertex();
         vh[v]->set_point(lift(m.points[v].x(), m.points[v].y()));
       }
     decltype(m.points)().swap(m.points);
-    const bool prepared = reservation.prepared();
     Tds& tds = tr.tds();
-    tds.swap(reservation.tds());
+    tds.swap(prepared_tds);
     tr.set_infinite_vertex(infinite);
     tds.set_dimension(2);
     // the edges without a face across, counter-clockwise
@@ -241,16 +240,10 @@ private:
       next = m.faces[boundary.back().first].v[Flat_mesh::cw(boundary.back().second)];
     } while(next != on_boundary);
     // The TDS face of flat face f, dead or alive, is the f-th made.
-    typename Reservation::Faces made;
-    if(prepared) {
-      made = std::move(reservation.faces());
-    } else {
-      for(std::size_t f = 0; f < m.faces.size(); ++f) made.record(tds.create_face());
-      made.index();
-    }
+    const typename Reservation::Faces& made = reservation.made;
     CGAL_assertion(made.size() == m.faces.size());
     // Each face's vertices and neighbours, and each vertex's face, change no
-    // container: bound by memory, they take two threads, in halves.
+    // container: bound by memory, they are written in halves.
     // The dead faces, found on the way, are never faces of the triangulation.
     auto write_faces = [&m, &made, &vh](Half_range faces, std::vector<Index>& dead) {
       const std::size_t end = faces.end;
@@ -272,7 +265,7 @@ private:
       for(std::size_t v = vertices.begin; v < vertices.end; ++v)
         if(vh[v] != Vertex_handle()) vh[v]->set_face(made[m.vertex_face[v]]);
     };
-    const std::vector<Index> dead = gather_in_two_halves<Index>(
+    const std::vector<Index> dead = gather_in_two_halves<Index, Concurrency_tag>(
       vh.size() >= least_size_for_two_halves, [&](int half, std::vector<Index>& dead_in_half) {
         write_faces(half_of(m.faces.size(), half), dead_in_half);
         give_vertices_a_face(half_of(vh.size(), half));

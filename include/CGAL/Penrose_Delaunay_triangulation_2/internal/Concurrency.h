@@ -1,0 +1,130 @@
+// Copyright (c) 2026 The Penrose_Delaunay_triangulation_2 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// How the construction shares its work, as its ConcurrencyTag says. With
+// Sequential_tag the calling thread does everything, in order. With
+// Parallel_tag the work is made of TBB tasks, which run on the threads that
+// TBB allows (tbb::global_control, tbb::task_arena) and wait for each other
+// through TBB: a thread that waits runs other tasks, or the task it waits
+// for, so a busy machine, or a single thread, only makes it slower. The
+// pieces are split and gathered the same way whatever the tag, so the
+// result does not depend on it. What a task throws reaches the caller once
+// the others have ended.
+
+#ifndef CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_CONCURRENCY_H
+#define CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_CONCURRENCY_H
+
+#include <CGAL/tags.h>
+
+#include <array>
+#include <cstddef>
+#include <type_traits>
+#include <vector>
+
+#if defined(CGAL_LINKED_WITH_TBB)
+#  include <tbb/blocked_range.h>
+#  include <tbb/parallel_for.h>
+#  include <tbb/task_group.h>
+#endif
+
+namespace CGAL {
+namespace internal {
+namespace Penrose {
+
+template <class ConcurrencyTag>
+constexpr bool is_parallel = std::is_convertible<ConcurrencyTag, Parallel_tag>::value;
+
+// Runs `background()` and `foreground()`, which must not depend on each
+// other, and returns once both are done. `foreground()` runs on the calling
+// thread (it may call the user's callback); with Parallel_tag,
+// `background()` is a task beside it, otherwise it runs after it.
+template <class ConcurrencyTag, class Background, class Foreground>
+void run_beside(const Background& background, const Foreground& foreground)
+{
+#if defined(CGAL_LINKED_WITH_TBB)
+  if constexpr(is_parallel<ConcurrencyTag>) {
+    tbb::task_group group;
+    group.run([&background] { background(); });
+    try {
+      foreground();
+    } catch(...) {
+      group.cancel();
+      try {
+        group.wait();
+      } catch(...) {  // the foreground's exception goes first
+      }
+      throw;
+    }
+    group.wait();
+    return;
+  }
+#endif
+  foreground();
+  background();
+}
+
+// Below this many items, a walk is not worth splitting.
+constexpr std::size_t least_size_for_two_halves = std::size_t(1) << 16;
+
+// Half `half` (0 or 1) of the items 0 to n - 1: [begin, end).
+struct Half_range
+{
+  std::size_t begin, end;
+};
+
+inline Half_range half_of(std::size_t n, int half) { return {std::size_t(half) * n / 2, std::size_t(half + 1) * n / 2}; }
+
+// Runs `half(0)`, on the calling thread, and `half(1)`, beside it where
+// `worth_splitting`, as run_beside() does: for walks whose halves write
+// disjoint data.
+template <class ConcurrencyTag, class Half>
+void run_in_two_halves(bool worth_splitting, const Half& half)
+{
+  if(!worth_splitting) {
+    half(0);
+    half(1);
+    return;
+  }
+  run_beside<ConcurrencyTag>([&half] { half(1); }, [&half] { half(0); });
+}
+
+// Runs `half(h, found)` for the halves h = 0 and 1 as run_in_two_halves()
+// does, each half with a vector `found` of its own, and returns the two
+// vectors one after the other. Each half has its vector apart until it
+// ends: side by side, the two vectors' ends would share a cache line, which
+// the threads would take turns at.
+template <class T, class ConcurrencyTag, class Half>
+std::vector<T> gather_in_two_halves(bool worth_splitting, const Half& half)
+{
+  std::array<std::vector<T>, 2> found;
+  run_in_two_halves<ConcurrencyTag>(worth_splitting, [&half, &found](int h) {
+    std::vector<T> own;
+    half(h, own);
+    found[h].swap(own);
+  });
+  found[0].insert(found[0].end(), found[1].begin(), found[1].end());
+  return std::move(found[0]);
+}
+
+// Runs `block(b, e)` over blocks [b, e) that cover the items 0 to n - 1:
+// one block with Sequential_tag, TBB's blocks of at least `grain` items
+// otherwise. For items that are independent of each other.
+template <class ConcurrencyTag, class Block>
+void for_each_block(std::size_t n, std::size_t grain, const Block& block)
+{
+#if defined(CGAL_LINKED_WITH_TBB)
+  if constexpr(is_parallel<ConcurrencyTag>) {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, grain),
+                      [&block](const tbb::blocked_range<std::size_t>& r) { block(r.begin(), r.end()); });
+    return;
+  }
+#endif
+  (void)grain;
+  if(n > 0) block(std::size_t(0), n);
+}
+
+} // namespace Penrose
+} // namespace internal
+} // namespace CGAL
+
+#endif // CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_CONCURRENCY_H
