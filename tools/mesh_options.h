@@ -49,14 +49,14 @@ inline const char* const usage_text =
   "  --points N    scale the density so that about N points come out (default 10000);\n"
   "                for a terrain, the number of vertices (see --base-fraction)\n"
   "  --scale S     multiply the density (in points per unit area) by S instead\n"
-  "  --max-error E terrain: refine the mesh by greedy insertion until the vertical error\n"
-  "                (in the height's unit) of every cell the mesh covers is at most E, or\n"
-  "                the mesh has --points vertices if given: whichever comes first\n"
-  "  --base-fraction F  terrain: sample F x --points vertices (with --max-error alone,\n"
-  "                F x the number that greedy insertion needs), then insert, one at a\n"
-  "                time, the centre of the cell of largest vertical error until the\n"
-  "                mesh has --points vertices or meets --max-error (default 0.3;\n"
-  "                1: the samples alone)\n"
+  "  --max-error E terrain: insert vertices until the vertical error (in the heights'\n"
+  "                unit) of every cell that the mesh covers is at most E or, if --points\n"
+  "                is given, until the mesh has N vertices: whichever comes first (the\n"
+  "                message and \"max_error_reached\" say which). Alone, it starts from a\n"
+  "                sample of a point per 1024 cells\n"
+  "  --base-fraction F  terrain: sample F x N of the N vertices, then insert, one at a\n"
+  "                time, the centre of the cell of largest vertical error (greedy\n"
+  "                insertion, as in delatin) until N (default 0.05; 1: samples only)\n"
   "  --region      the rectangle sampled (default 0 0 1 1; an image or a height field is\n"
   "                stretched over it, and by default covers 0 0 WIDTH HEIGHT, or the\n"
   "                extent in the header of an .asc grid)\n"
@@ -79,7 +79,8 @@ inline const char* const usage_text =
   "                \"vertices\": ..., \"faces\": ..., \"flips\": ..., \"fallbacks\": ..., ...}; for a\n"
   "                terrain also the vertical \"max_error\" and \"rms_error\" of the mesh and\n"
   "                \"grid_max_error\", \"grid_rms_error\" of the regular grid of as many\n"
-  "                vertices; for an image \"psnr\" and \"grid_psnr\" likewise. The tile tree is\n"
+  "                vertices, \"inserted_points\" and \"refine_seconds\" of the greedy\n"
+  "                insertion; for an image \"psnr\" and \"grid_psnr\" likewise. The tile tree is\n"
   "                sampled while the triangulation is derived from it: sample_seconds is the\n"
   "                sampler's preparation, triangulate_seconds the rest\n"
   "\n"
@@ -106,7 +107,7 @@ struct Options
   double region[4] = {0, 0, 1, 1};
   bool region_given = false, correction = true, boundary = false;
   double max_error = 0.;      // 0: not given
-  double base_fraction = 0.3;
+  double base_fraction = 0.05;
   double gamma = 1., height_scale = 1.;
   bool log = false, invert = false, gradient = false;
   bool viewer_given = false;
@@ -197,6 +198,7 @@ inline Options parse(int argc, const char* const* argv)
   if(have_max_error && !(o.max_error > 0.)) usage_error("--max-error must be positive");
   if(have_base_fraction && !(o.base_fraction > 0. && o.base_fraction <= 1.)) usage_error("--base-fraction must be in (0, 1]");
   if((have_max_error || have_base_fraction) && !terrain) usage_error("--max-error and --base-fraction apply to --terrain");
+  if(have_base_fraction && have_max_error && !have_points) usage_error("--base-fraction is a fraction of --points: give both");
   return o;
 }
 

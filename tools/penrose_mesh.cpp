@@ -546,46 +546,37 @@ void run(Options o)
 
   const Raster<double>& heights = in.heights;
   auto lift = [&heights](double x, double y) { return K::Point_3(x, y, heights.values.empty() ? 0. : heights(x, y)); };
-  std::size_t sampled = 0, boundary = 0;
-  auto sample = [&](Mesh& m, std::size_t n) {
-    const auto t = std::chrono::steady_clock::now();
-    std::unique_ptr<Sampler> sampler = in_context(o, [&] { return make_sampler(o, region, d, n); });
-    time.sample = seconds_since(t);
-    in_context(o, [&] { triangulate(m, *sampler, lift, bar); });
-    sampled = m.points.size();
-    boundary = o.boundary ? add_boundary(m, o, d, sampler->density_scale(), lift) : 0;
-    return sampler;
-  };
   // A terrain's mesh is sampled for a fraction of its vertices, the rest
-  // inserted greedily. With --max-error alone, that fraction is of the
-  // vertices that greedy insertion needs from a sparse sample.
+  // inserted greedily. With --max-error alone the count is not known: the
+  // sample is sparse, a point per 1024 cells, and greedy insertion, which
+  // needs the fewest vertices for a given error, does the rest.
   const bool greedy = !heights.values.empty() && (o.max_error > 0. || (o.points > 0. && o.base_fraction < 1.));
-  const std::size_t budget = greedy && (o.points_given || o.max_error == 0.) ? std::size_t(o.points)
-                                                                              : std::numeric_limits<std::size_t>::max();
+  const bool bounded = o.points_given || o.max_error == 0.;
+  const std::size_t budget = greedy && bounded ? std::size_t(o.points) : std::numeric_limits<std::size_t>::max();
   std::size_t n = std::size_t(o.points);
+  if(greedy && n > 0)
+    n = bounded ? std::max<std::size_t>(1, std::size_t(std::lround(o.base_fraction * double(n))))
+                : std::max<std::size_t>(16, heights.width * heights.height / 1024);
+
+  bar.stage("sampling", 0.1, 0.2);
   auto t0 = std::chrono::steady_clock::now();
-  if(greedy && budget == std::numeric_limits<std::size_t>::max() && n > 0) {
-    bar.stage("estimating", 0.1, 0.2);
-    Mesh pilot;
-    sample(pilot, std::max<std::size_t>(16, heights.width * heights.height / 1024));
-    refine(pilot, o, heights, budget);
-    n = pilot.t.number_of_vertices();
-  }
-  if(greedy && n > 0) n = std::max<std::size_t>(1, std::size_t(std::lround(o.base_fraction * double(n))));
-  time.refine = seconds_since(t0);
+  const std::unique_ptr<Sampler> sampler = in_context(o, [&] { return make_sampler(o, region, d, n); });
+  time.sample = seconds_since(t0);
 
   // the tile tree is sampled while the triangulation is derived from it
   bar.stage("triangulating", 0.2, 0.6);
   t0 = std::chrono::steady_clock::now();
   Mesh m;
-  const std::unique_ptr<Sampler> sampler = sample(m, n);
-  time.triangulate = seconds_since(t0) - time.sample;
+  in_context(o, [&] { triangulate(m, *sampler, lift, bar); });
+  const std::size_t sampled = m.points.size();
+  const std::size_t boundary = o.boundary ? add_boundary(m, o, d, sampler->density_scale(), lift) : 0;
+  time.triangulate = seconds_since(t0);
 
   bar.stage("refining", 0.6, 0.7);
   t0 = std::chrono::steady_clock::now();
   CGAL::Terrain_refinement_result refined;
   if(greedy) refined = refine(m, o, heights, budget);
-  time.refine += seconds_since(t0);
+  time.refine = seconds_since(t0);
 
   bar.stage("measuring", 0.7, 0.85);
   t0 = std::chrono::steady_clock::now();

@@ -49,13 +49,21 @@ class Greedy_terrain_refinement
   typedef typename DT::Vertex_handle Vertex_handle;
   typedef typename DT::Point Point;
 
+  // The worst cell of a face when it was scanned.
   struct Entry
   {
-    double error;
     std::size_t cell;
     Face_handle face;
     Vertex_handle vertex[3];
-    bool operator<(const Entry& e) const { return error < e.error; }
+  };
+
+  // The queue holds the errors and where their entries are: the heap's
+  // sifts, most of the cost of a step, then touch a third of the memory.
+  struct Key
+  {
+    double error;
+    std::size_t entry;
+    bool operator<(const Key& k) const { return error < k.error; }
   };
 
 public:
@@ -63,7 +71,7 @@ public:
                             const Bbox_2& region)
     : dt_(dt), w_(width), h_(height), heights_(heights), x0_(region.xmin()), y1_(region.ymax()),
       cell_x_((region.xmax() - region.xmin()) / double(width)),
-      cell_y_((region.ymax() - region.ymin()) / double(height))
+      cell_y_((region.ymax() - region.ymin()) / double(height)), at_vertex_(width * height, 0)
   {}
 
   template <class Visitor>
@@ -73,18 +81,23 @@ public:
     if(dt_.dimension() == 2)
       for(Face_handle f : dt_.finite_face_handles()) scan(f);
     while(!queue_.empty()) {
-      const Entry e = queue_.top();
-      if(!current(e)) { queue_.pop(); continue; }
-      if(e.error <= max_error) break;
+      const Key top = queue_.top();
+      const Entry e = entries_[top.entry];
+      if(!current(e)) {
+        pop();
+        continue;
+      }
+      if(top.error <= max_error) break;
       if(dt_.number_of_vertices() >= number_of_points) {
         result.max_error_reached = false;
         break;
       }
-      queue_.pop();
+      pop();
       const std::size_t i = e.cell % w_, j = e.cell / w_;
       const Point p(x0_ + (double(i) + 0.5) * cell_x_, y1_ - (double(j) + 0.5) * cell_y_, double(heights_[e.cell]));
       const std::size_t before = dt_.number_of_vertices();
       const Vertex_handle v = dt_.insert(p, e.face);
+      at_vertex_[e.cell] = 1;
       if(dt_.number_of_vertices() == before)
         v->set_point(p);  // a vertex at the cell's centre with another height: it takes the cell's
       else {
@@ -157,7 +170,8 @@ private:
     }
     const double v_lo = (std::max)(0., std::ceil((std::min)({v[0], v[1], v[2]})));
     const double v_hi = (std::min)(double(h_) - 1., std::floor((std::max)({v[0], v[1], v[2]})));
-    Entry worst{0., 0, f, {f->vertex(0), f->vertex(1), f->vertex(2)}};
+    double worst = 0.;
+    std::size_t worst_cell = 0;
     for(double row = v_lo; row <= v_hi; ++row) {
       double lo = std::numeric_limits<double>::infinity(), hi = -lo;
       for(int k = 0; k < 3; ++k) {
@@ -177,21 +191,44 @@ private:
       const std::size_t row_start = std::size_t(row) * w_;
       for(double i = i_lo; i <= i_hi; ++i) {
         const std::size_t cell = row_start + std::size_t(i);
+        if(at_vertex_[cell]) continue;
         const double e = std::abs(plane(i, row) - double(heights_[cell]));
-        if(e > worst.error) {
-          worst.error = e;
-          worst.cell = cell;
+        if(e > worst) {
+          worst = e;
+          worst_cell = cell;
         }
       }
     }
-    if(worst.error > 0.) queue_.push(worst);
+    if(worst > 0.) {
+      const Entry e{worst_cell, f, {f->vertex(0), f->vertex(1), f->vertex(2)}};
+      if(free_.empty()) {
+        queue_.push({worst, entries_.size()});
+        entries_.push_back(e);
+      } else {
+        queue_.push({worst, free_.back()});
+        entries_[free_.back()] = e;
+        free_.pop_back();
+      }
+    }
+  }
+
+  void pop()
+  {
+    free_.push_back(queue_.top().entry);
+    queue_.pop();
   }
 
   DT& dt_;
   std::size_t w_, h_;
   const HeightRange& heights_;
   double x0_, y1_, cell_x_, cell_y_;
-  std::priority_queue<Entry> queue_;
+  // The cells at a vertex with their height, whose error is 0: the plane
+  // through a face, rounded, may miss it by an ulp, which inserting the
+  // cell again would not cure.
+  std::vector<unsigned char> at_vertex_;
+  std::priority_queue<Key> queue_;
+  std::vector<Entry> entries_;
+  std::vector<std::size_t> free_;  // the entries that left the queue
 };
 
 } // namespace Penrose

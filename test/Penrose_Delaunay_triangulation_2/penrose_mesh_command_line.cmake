@@ -162,6 +162,40 @@ foreach(c ${option_cases})
   endif()
 endforeach()
 
+# --max-error: every cell within it, or --points vertices if fewer; bad
+# values of the terrain options are named (status 2).
+foreach(points 0 5000)
+  set(budget)
+  if(points)
+    set(budget --points ${points})
+  endif()
+  run_mesh(--terrain ${DATA}/terrain.png --max-error 300 ${budget} --stats-json ${WORK}/max_error.json)
+  file(READ ${WORK}/max_error.json json)
+  json_number("${json}" max_error max)
+  json_number("${json}" vertices vertices)
+  if(NOT rc EQUAL 0 OR (NOT points AND (max GREATER 300 OR NOT json MATCHES "\"max_error_reached\": true"))
+     OR (points AND (NOT vertices EQUAL points OR NOT max GREATER 300 OR NOT json MATCHES "\"max_error_reached\": false")))
+    message(FATAL_ERROR "--max-error 300 ${budget}: status ${rc}, ${vertices} vertices, max error ${max}: ${err}")
+  endif()
+endforeach()
+foreach(c "--max-error 0|--max-error must be positive" "--max-error -1|--max-error must be positive"
+          "--max-error nan|--max-error expects a number" "--base-fraction 0|--base-fraction must be in"
+          "--base-fraction 1.5|--base-fraction must be in" "--boundary --no-boundary|--no-boundary, not both"
+          "--max-error 1 --base-fraction 0.5|--base-fraction is a fraction of --points")
+  string(REPLACE "|" ";" c "${c}")
+  list(GET c 0 options)
+  list(GET c 1 why)
+  separate_arguments(options)
+  run_mesh(--terrain ${DATA}/terrain.png ${options})
+  if(NOT rc EQUAL 2 OR NOT err MATCHES "^penrose_mesh: [^\n]*${why}[^\n]*\n$")
+    message(FATAL_ERROR "${options}: expected status 2 and one line, got ${rc}: ${err}")
+  endif()
+endforeach()
+run_mesh(--density constant --max-error 1)
+if(NOT rc EQUAL 2 OR NOT err MATCHES "--max-error and --base-fraction apply to --terrain")
+  message(FATAL_ERROR "--density constant --max-error 1: got ${rc}: ${err}")
+endif()
+
 # A count beyond std::size_t is refused, not wrapped around (1e30 gave 0 points).
 run_mesh(--density constant --points 1e30)
 if(NOT rc EQUAL 2 OR NOT err MATCHES "--points must be at most")

@@ -12,8 +12,11 @@
 # python3-matplotlib. Writes $OUT (default build/terrain_benchmark)/terrain.csv
 # (dem,tool,target,vertices,triangles,seconds,rms,max,uncovered; seconds: the
 # whole process) and one plot of RMS and maximum error against vertices a DEM.
-# POINTS (default "5000 20000 80000") sets the penrose_mesh sample counts; the
-# other tools are given the vertex count that penrose_mesh reached.
+# POINTS (default "5000 20000 80000") sets the penrose_mesh vertex counts; the
+# other tools are given the vertex count that penrose_mesh reached. Then, for
+# the maximum error E of delatin's mesh at each count, penrose_mesh --max-error E
+# and delatin refined to E (tools "penrose_mesh --max-error" and "delatin
+# --max-error", target E) compare the vertices and the time that E takes.
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../../.." && pwd)
@@ -67,7 +70,15 @@ for asc in "${dems[@]}"; do
       t=$(seconds node "$out/greedy_meshes.mjs" "$tool" "$f64" "$width" "$height" "$out/$name" vertices "$vertices")
       row=$("$python" "$here/mesh_error.py" "$f64" "$width" "$height" "$out/${name}_${tool}_$vertices.off")
       echo "$name,$tool,$vertices,${row%%,*},$(echo "$row" | cut -d, -f2),$t,$(echo "$row" | cut -d, -f3-)" >> "$csv"
+      [ "$tool" = delatin ] && e=$(echo "$row" | cut -d, -f4)
     done
+    mesh="$out/${name}_penrose_e$e.off"
+    t=$(seconds "$build/tools/penrose_mesh" --terrain "$asc" --max-error "$e" --out-mesh "$mesh")
+    row=$("$python" "$here/mesh_error.py" "$f64" "$width" "$height" "$mesh" --cells)
+    echo "$name,penrose_mesh --max-error,$e,${row%%,*},$(echo "$row" | cut -d, -f2),$t,$(echo "$row" | cut -d, -f3-)" >> "$csv"
+    t=$(seconds node "$out/greedy_meshes.mjs" delatin "$f64" "$width" "$height" "$out/$name" error "$e")
+    row=$("$python" "$here/mesh_error.py" "$f64" "$width" "$height" "$out/${name}_delatin_$e.off")
+    echo "$name,delatin --max-error,$e,${row%%,*},$(echo "$row" | cut -d, -f2),$t,$(echo "$row" | cut -d, -f3-)" >> "$csv"
   done
 done
 "$python" "$here/plot_terrain_benchmark.py" "$csv" "$out"
