@@ -69,14 +69,14 @@ TBB allows (`tbb::global_control`, `tbb::task_arena`):
   new vertices, which samples are kept, which children are subdivided) in
   tasks, those of the next level while the calling thread links the
   triangles of this one; the last level's triangles are made in two halves;
-- before step 2, the vertices to remove are looked for in two halves;
+- before step 2, the vertices to remove are looked for in tasks;
 - during step 3, the samples are moved, then folded triangles looked for,
-  in two halves;
+  in tasks;
 - during step 4, the storage of the TDS is reserved and its faces created,
   empty, in a task beside the Lawson flips (most of the cost of writing a
   TDS is the first touch of its memory);
 - while the TDS is written, its faces are given their vertices and
-  neighbours, and its vertices their face, in two halves.
+  neighbours, and its vertices their face, in tasks.
 
 The density (and its bound) is then called from several threads at once, and
 must be thread-safe; the callback of `build()` is only called from the

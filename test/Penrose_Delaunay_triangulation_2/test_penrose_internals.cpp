@@ -321,9 +321,12 @@ TEST(Tiles, RegionPruningDropsNoSample)
 }
 
 // Both halves run once, the first on the calling thread (which alone may
-// call the user's callback); what either throws reaches the caller.
+// call the user's callback), and what either throws reaches the caller;
+// every block of a walk runs once, and what the blocks gather comes in the
+// order of the items, whatever the tag; what a block throws reaches the
+// caller.
 template <class ConcurrencyTag>
-void expect_halves_run_once_and_rethrow()
+void expect_pieces_run_once_and_rethrow()
 {
   for(bool worth_splitting : {false, true}) {
     std::array<std::thread::id, 2> ran_on;
@@ -337,49 +340,50 @@ void expect_halves_run_once_and_rethrow()
     EXPECT_EQ(ran_on[0], std::this_thread::get_id());
     if(!is_parallel<ConcurrencyTag>) { EXPECT_EQ(ran_on[1], std::this_thread::get_id()); }
     for(int thrower : {0, 1}) {
-      const std::vector<int> found = [&] {
-        try {
-          return gather_in_two_halves<int, ConcurrencyTag>(worth_splitting, [thrower](int half, std::vector<int>& f) {
-            f.push_back(half);
-            if(half == thrower) throw std::runtime_error("half " + std::to_string(half));
-          });
-        } catch(const std::runtime_error& e) {
-          EXPECT_EQ(std::string(e.what()), "half " + std::to_string(thrower));
-          return std::vector<int>{-1};
-        }
-      }();
-      EXPECT_EQ(found, std::vector<int>{-1}) << worth_splitting << " " << thrower;
+      std::string message;
+      try {
+        run_in_two_halves<ConcurrencyTag>(worth_splitting, [thrower](int half) {
+          if(half == thrower) throw std::runtime_error("half " + std::to_string(half));
+        });
+      } catch(const std::runtime_error& e) {
+        message = e.what();
+      }
+      EXPECT_EQ(message, "half " + std::to_string(thrower)) << worth_splitting;
     }
-    EXPECT_EQ((gather_in_two_halves<int, ConcurrencyTag>(worth_splitting, [](int half, std::vector<int>& f) {
-                f.assign(3, half);
-              })),
-              (std::vector<int>{0, 0, 0, 1, 1, 1}));
   }
-}
 
-TEST(Internals, TwoHalvesRunOnceInOrderAndRethrow)
-{
-  expect_halves_run_once_and_rethrow<CGAL::Sequential_tag>();
-#if defined(CGAL_LINKED_WITH_TBB)
-  expect_halves_run_once_and_rethrow<CGAL::Parallel_tag>();
-#endif
-}
-
-TEST(Internals, BlocksCoverEveryItemOnce)
-{
-  const std::size_t n = 100000;
+  const std::size_t n = 5 * walk_block + 17;
   std::vector<int> seen(n, 0);
-  auto mark = [&seen](std::size_t b, std::size_t e) {
+  for_each_block<ConcurrencyTag>(n, 1000, [&seen](std::size_t b, std::size_t e) {
     for(std::size_t k = b; k < e; ++k) ++seen[k];
-  };
-  for_each_block<CGAL::Sequential_tag>(n, 1000, mark);
+  });
+  EXPECT_EQ(std::count(seen.begin(), seen.end(), 1), std::ptrdiff_t(n));
+  // every third item, in order
+  const std::vector<std::size_t> found =
+    gather_in_blocks<std::size_t, ConcurrencyTag>(n, [](std::size_t b, std::size_t e, std::vector<std::size_t>& f) {
+      for(std::size_t k = b; k < e; ++k)
+        if(k % 3 == 0) f.push_back(k);
+    });
+  std::vector<std::size_t> expected;
+  for(std::size_t k = 0; k < n; k += 3) expected.push_back(k);
+  EXPECT_TRUE(found == expected);
+  std::string message;
+  try {
+    gather_in_blocks<std::size_t, ConcurrencyTag>(n, [n](std::size_t b, std::size_t e, std::vector<std::size_t>&) {
+      if(b <= n - 1 && n - 1 < e) throw std::runtime_error("the last item");
+    });
+  } catch(const std::runtime_error& e) {
+    message = e.what();
+  }
+  EXPECT_EQ(message, "the last item");
+}
+
+TEST(Internals, HalvesAndBlocksRunOnceInOrderAndRethrow)
+{
+  expect_pieces_run_once_and_rethrow<CGAL::Sequential_tag>();
 #if defined(CGAL_LINKED_WITH_TBB)
-  for_each_block<CGAL::Parallel_tag>(n, 1000, mark);
-  const int runs = 2;
-#else
-  const int runs = 1;
+  expect_pieces_run_once_and_rethrow<CGAL::Parallel_tag>();
 #endif
-  EXPECT_EQ(std::count(seen.begin(), seen.end(), runs), std::ptrdiff_t(n));
 }
 
 TEST(Internals, TdsReservationMakesTheFacesInOrder)

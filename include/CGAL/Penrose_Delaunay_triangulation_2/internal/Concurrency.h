@@ -6,8 +6,8 @@
 // Parallel_tag the work is made of TBB tasks, which run on the threads that
 // TBB allows (tbb::global_control, tbb::task_arena) and wait for each other
 // through TBB: a thread that waits runs other tasks, or the task it waits
-// for, so a busy machine, or a single thread, only makes it slower. The
-// pieces are split and gathered the same way whatever the tag, so the
+// for, so a busy machine, or a single thread, only makes it slower. What
+// the pieces find is gathered in the same order whatever the tag, so the
 // result does not depend on it. What a task throws reaches the caller once
 // the others have ended.
 
@@ -16,7 +16,7 @@
 
 #include <CGAL/tags.h>
 
-#include <array>
+#include <algorithm>
 #include <cstddef>
 #include <type_traits>
 #include <vector>
@@ -63,7 +63,7 @@ void run_beside(const Background& background, const Foreground& foreground)
   background();
 }
 
-// Below this many items, a walk is not worth splitting.
+// Below this many items, a walk is not worth splitting in halves.
 constexpr std::size_t least_size_for_two_halves = std::size_t(1) << 16;
 
 // Half `half` (0 or 1) of the items 0 to n - 1: [begin, end).
@@ -88,24 +88,6 @@ void run_in_two_halves(bool worth_splitting, const Half& half)
   run_beside<ConcurrencyTag>([&half] { half(1); }, [&half] { half(0); });
 }
 
-// Runs `half(h, found)` for the halves h = 0 and 1 as run_in_two_halves()
-// does, each half with a vector `found` of its own, and returns the two
-// vectors one after the other. Each half has its vector apart until it
-// ends: side by side, the two vectors' ends would share a cache line, which
-// the threads would take turns at.
-template <class T, class ConcurrencyTag, class Half>
-std::vector<T> gather_in_two_halves(bool worth_splitting, const Half& half)
-{
-  std::array<std::vector<T>, 2> found;
-  run_in_two_halves<ConcurrencyTag>(worth_splitting, [&half, &found](int h) {
-    std::vector<T> own;
-    half(h, own);
-    found[h].swap(own);
-  });
-  found[0].insert(found[0].end(), found[1].begin(), found[1].end());
-  return std::move(found[0]);
-}
-
 // Runs `block(b, e)` over blocks [b, e) that cover the items 0 to n - 1:
 // one block with Sequential_tag, TBB's blocks of at least `grain` items
 // otherwise. For items that are independent of each other.
@@ -121,6 +103,34 @@ void for_each_block(std::size_t n, std::size_t grain, const Block& block)
 #endif
   (void)grain;
   if(n > 0) block(std::size_t(0), n);
+}
+
+// Items per task of a walk bound by memory: small, so that a thread that
+// the system stops holds little of the walk back.
+constexpr std::size_t walk_block = std::size_t(1) << 14;
+
+// Runs `walk(b, e, found)` over blocks [b, e) that cover the items 0 to
+// n - 1, in order, each with a vector `found` of its own, and returns the
+// vectors one after the other: the same whatever the tag. With
+// Parallel_tag the blocks are TBB tasks of walk_block items.
+template <class T, class ConcurrencyTag, class Walk>
+std::vector<T> gather_in_blocks(std::size_t n, const Walk& walk)
+{
+  const std::size_t blocks = is_parallel<ConcurrencyTag> ? (n + walk_block - 1) / walk_block : 1;
+  const std::size_t size = is_parallel<ConcurrencyTag> ? walk_block : n;
+  // each block's vector apart until it ends: side by side, the ends of two
+  // vectors would share a cache line, which their threads would take turns at
+  std::vector<std::vector<T>> found(blocks);
+  for_each_block<ConcurrencyTag>(blocks, 1, [&](std::size_t first, std::size_t last) {
+    for(std::size_t i = first; i < last; ++i) {
+      std::vector<T> own;
+      walk(i * size, (std::min)(n, (i + 1) * size), own);
+      found[i].swap(own);
+    }
+  });
+  std::vector<T> all;
+  for(std::vector<T>& f : found) all.insert(all.end(), f.begin(), f.end());
+  return all;
 }
 
 } // namespace Penrose

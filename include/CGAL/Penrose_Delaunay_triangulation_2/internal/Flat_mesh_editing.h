@@ -98,8 +98,8 @@ public:
   // copy of the positions is needed for the way back: on return `target`
   // holds their former positions, and still the targets of the vertices
   // that went back (moved one at a time, or returned).
-  // With Parallel_tag, the moves at once and the search for folds run in
-  // two halves beside each other.
+  // With Parallel_tag, the moves at once and the search for folds are TBB
+  // tasks.
   template <class ConcurrencyTag, class Targets>
   std::vector<Index> move_vertices(Targets& target, std::size_t& repaired)
   {
@@ -111,26 +111,23 @@ public:
       target[v] = {p.x(), p.y()};
     };
     // The moves at once, and the search for folds, read or write each
-    // vertex's or face's own data: they can be split in halves.
-    const bool worth_splitting = n >= least_size_for_two_halves;
-    run_in_two_halves<ConcurrencyTag>(worth_splitting, [&](int half) {
-      const Half_range vertices = half_of(target.size(), half);
-      for(std::size_t v = vertices.begin; v < vertices.end; ++v)
+    // vertex's or face's own data: they can be split in blocks.
+    for_each_block<ConcurrencyTag>(target.size(), walk_block, [&](std::size_t begin, std::size_t end) {
+      for(std::size_t v = begin; v < end; ++v)
         if(!std::isnan(target[v].first) && m_.vertex_face[v] != null &&
            (target[v].first != m_.points[v].x() || target[v].second != m_.points[v].y())) {
           trade(Index(v));
           state[v] = 1;
         }
     });
-    std::vector<Index> folded = gather_in_two_halves<Index, ConcurrencyTag>(worth_splitting, [&](int half, std::vector<Index>& found) {
-      const Half_range faces = half_of(m_.faces.size(), half);
-      const Index end = Index(faces.end);
-      for(Index f = Index(faces.begin); f < end; ++f) {
-        if(f + Flat_mesh::fetch_distance < end)
-          for(Index u : m_.faces[f + Flat_mesh::fetch_distance].v) CGAL_PENROSE_PREFETCH(&m_.points[u]);
-        if(m_.face_alive[f] && !positive(f)) found.push_back(f);
-      }
-    });
+    std::vector<Index> folded = gather_in_blocks<Index, ConcurrencyTag>(
+      m_.faces.size(), [&](std::size_t begin, std::size_t end, std::vector<Index>& found) {
+        for(std::size_t f = begin; f < end; ++f) {
+          if(f + Flat_mesh::fetch_distance < end)
+            for(Index u : m_.faces[f + Flat_mesh::fetch_distance].v) CGAL_PENROSE_PREFETCH(&m_.points[u]);
+          if(m_.face_alive[f] && !positive(Index(f))) found.push_back(Index(f));
+        }
+      });
     std::vector<Index> next, sent_back;
     while(!folded.empty()) {
       next.clear();

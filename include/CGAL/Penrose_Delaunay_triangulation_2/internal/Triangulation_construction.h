@@ -5,8 +5,8 @@
 // documentation): the base mesh of the tile tree, framed; the vertices that
 // are not samples removed; the samples moved; Lawson flips; the flat mesh
 // written into the TDS; what local repair could not place left to insert()
-// and remove(). With Parallel_tag, the walks that are bound by memory run in
-// two halves, and the TDS's storage is made beside the flips (see
+// and remove(). With Parallel_tag, the walks that are bound by memory are
+// split in TBB tasks, and the TDS's storage is made beside the flips (see
 // Concurrency.h and Tds_reservation.h); the base mesh's builder runs the
 // density in tasks of its own.
 
@@ -25,6 +25,7 @@
 #include <CGAL/assertions.h>
 
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <cstddef>
 #include <functional>
@@ -135,23 +136,22 @@ private:
 
   // The vertices among the first `n` of the mesh that are in it and not
   // `kept`, in order; `in_mesh` counts those in it. A walk over every vertex,
-  // bound by memory, so it is done in halves.
+  // bound by memory, so it is split in blocks.
   template <class Kept>
   static std::vector<Index> inactive_vertices(const Flat_mesh& mesh, std::size_t n, const Kept& kept, std::size_t& in_mesh)
   {
-    std::array<std::size_t, 2> count = {{0, 0}};
-    std::vector<Index> inactive = gather_in_two_halves<Index, Concurrency_tag>(
-      n >= least_size_for_two_halves, [&](int half, std::vector<Index>& found) {
-        std::size_t present = 0;
-        const Half_range vertices = half_of(n, half);
-        for(std::size_t v = vertices.begin; v < vertices.end; ++v)
+    std::atomic<std::size_t> present{0};
+    std::vector<Index> inactive = gather_in_blocks<Index, Concurrency_tag>(
+      n, [&](std::size_t begin, std::size_t end, std::vector<Index>& found) {
+        std::size_t here = 0;
+        for(std::size_t v = begin; v < end; ++v)
           if(mesh.vertex_face[v] != Flat_mesh::null) {
-            ++present;
+            ++here;
             if(!kept(v)) found.push_back(Index(v));
           }
-        count[half] = present;
+        present += here;
       });
-    in_mesh = count[0] + count[1];
+    in_mesh = present;
     return inactive;
   }
 
@@ -243,11 +243,10 @@ private:
     const typename Reservation::Faces& made = reservation.made;
     CGAL_assertion(made.size() == m.faces.size());
     // Each face's vertices and neighbours, and each vertex's face, change no
-    // container: bound by memory, they are written in halves.
+    // container: bound by memory, they are written in blocks.
     // The dead faces, found on the way, are never faces of the triangulation.
-    auto write_faces = [&m, &made, &vh](Half_range faces, std::vector<Index>& dead) {
-      const std::size_t end = faces.end;
-      for(std::size_t f = faces.begin; f < end; ++f) {
+    auto write_faces = [&m, &made, &vh](std::size_t begin, std::size_t end, std::vector<Index>& dead) {
+      for(std::size_t f = begin; f < end; ++f) {
         if(f + ahead < end)
           for(Index v : m.faces[f + ahead].v) CGAL_PENROSE_PREFETCH(&vh[v]);
         if(!m.face_alive[f]) {
@@ -261,15 +260,12 @@ private:
           if(F.n[i] != Flat_mesh::null) h->set_neighbor(i, made[F.n[i]]);
       }
     };
-    auto give_vertices_a_face = [&m, &made, &vh](Half_range vertices) {
-      for(std::size_t v = vertices.begin; v < vertices.end; ++v)
+    auto give_vertices_a_face = [&m, &made, &vh](std::size_t begin, std::size_t end) {
+      for(std::size_t v = begin; v < end; ++v)
         if(vh[v] != Vertex_handle()) vh[v]->set_face(made[m.vertex_face[v]]);
     };
-    const std::vector<Index> dead = gather_in_two_halves<Index, Concurrency_tag>(
-      vh.size() >= least_size_for_two_halves, [&](int half, std::vector<Index>& dead_in_half) {
-        write_faces(half_of(m.faces.size(), half), dead_in_half);
-        give_vertices_a_face(half_of(vh.size(), half));
-      });
+    const std::vector<Index> dead = gather_in_blocks<Index, Concurrency_tag>(m.faces.size(), write_faces);
+    for_each_block<Concurrency_tag>(vh.size(), walk_block, give_vertices_a_face);
     for(Index f : dead) tds.faces().erase(made[f]);
     std::vector<std::pair<Vertex_handle, Face_handle>> hull;  // infinite face (inf, b, a), keyed by b
     for(const auto& [f, i] : boundary) {
