@@ -471,8 +471,7 @@ void write_stats(const Options& o, const Input& in, const Sampler& sampler, cons
   field("expected_points", json_number(sampler.expected_number_of_points()));
   field("boundary_points", count(boundary));
   field("inserted_points", count(refined.number_of_inserted_points));
-  if(refined.number_of_inserted_points || o.max_error > 0.)
-    field("max_error_reached", refined.max_error_reached ? "true" : "false");
+  if(o.max_error > 0.) field("max_error_reached", refined.max_error_reached ? "true" : "false");
   field("vertices", count(m.t.number_of_vertices()));
   field("faces", count(m.t.number_of_faces()));
   field("flips", count(m.t.number_of_flips()));

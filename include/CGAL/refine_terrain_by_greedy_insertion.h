@@ -8,7 +8,6 @@
 
 #include <CGAL/Bbox_2.h>
 #include <CGAL/Named_function_parameters.h>
-#include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/number_utils.h>
 
 #include <algorithm>
@@ -30,8 +29,9 @@ struct Terrain_refinement_result
   std::size_t number_of_inserted_points = 0;
   /// The largest vertical error over the cells covered by the triangulation at the end.
   double max_error = 0.;
-  /// `true` if every covered cell is within `max_error` (the refinement stopped
-  /// there), `false` if it stopped at `number_of_points` vertices before.
+  /// `true` if every covered cell is within the parameter `max_error` (the
+  /// refinement stopped there), `false` if it stopped at `number_of_points`
+  /// vertices before.
   bool max_error_reached = true;
 };
 
@@ -78,8 +78,9 @@ public:
   Terrain_refinement_result run(double max_error, std::size_t number_of_points, Visitor& visitor)
   {
     Terrain_refinement_result result;
+    const double inf = std::numeric_limits<double>::infinity();
     if(dt_.dimension() == 2)
-      for(Face_handle f : dt_.finite_face_handles()) scan(f);
+      for(Face_handle f : dt_.finite_face_handles()) scan(f, max_error);
     while(!queue_.empty()) {
       const Key top = queue_.top();
       const Entry e = entries_[top.entry];
@@ -106,10 +107,15 @@ public:
       }
       auto f = dt_.incident_faces(v), done = f;
       do
-        if(!dt_.is_infinite(f)) scan(f);
+        if(!dt_.is_infinite(f)) scan(f, max_error);
       while(++f != done);
     }
-    result.max_error = queue_.empty() ? 0. : queue_.top().error;
+    if(queue_.empty() || queue_.top().error <= max_error) {
+      // the faces within the bound were not queued: the largest error is among them
+      result.max_error = 0.;
+      for(Face_handle f : dt_.finite_face_handles()) result.max_error = (std::max)(result.max_error, scan(f, inf));
+    } else
+      result.max_error = queue_.top().error;
     return result;
   }
 
@@ -155,14 +161,15 @@ private:
     double operator()(double u, double v) const { return z0 + a * (u - u0) + b * (v - v0); }
   };
 
-  // Pushes the worst cell of the finite face `f`. Each row's span is bounded
+  // Returns the largest error of the finite face `f`, and queues its cell if
+  // the error is above `queued_above`. Each row's span is bounded
   // by the crossings of its edges, each computed from the edge's endpoints in
   // a fixed order and kept inclusive: two faces find the same crossing on
   // their common edge, so that every cell covered is scanned.
-  void scan(Face_handle f)
+  double scan(Face_handle f, double queued_above)
   {
     const Plane plane(f, *this);
-    if(plane.flat) return;
+    if(plane.flat) return 0.;
     double u[3], v[3];
     for(int k = 0; k < 3; ++k) {
       u[k] = this->u(f->vertex(k)->point());
@@ -199,7 +206,7 @@ private:
         }
       }
     }
-    if(worst > 0.) {
+    if(worst > queued_above) {
       const Entry e{worst_cell, f, {f->vertex(0), f->vertex(1), f->vertex(2)}};
       if(free_.empty()) {
         queue_.push({worst, entries_.size()});
@@ -210,6 +217,7 @@ private:
         free_.pop_back();
       }
     }
+    return worst;
   }
 
   void pop()
