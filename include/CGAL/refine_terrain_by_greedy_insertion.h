@@ -135,32 +135,6 @@ private:
   double u(const Point& p) const { return (to_double(p.x()) - x0_) / cell_x_ - 0.5; }
   double v(const Point& p) const { return (y1_ - to_double(p.y())) / cell_y_ - 0.5; }
 
-  // The linear interpolation of the heights of a face's vertices, in cell coordinates.
-  struct Plane
-  {
-    double u0, v0, z0, a = 0., b = 0.;
-    bool flat = false;  // no area in doubles
-
-    Plane(Face_handle f, const Greedy_terrain_refinement& r)
-    {
-      double u[3], v[3], z[3];
-      for(int k = 0; k < 3; ++k) {
-        const Point& p = f->vertex(k)->point();
-        u[k] = r.u(p);
-        v[k] = r.v(p);
-        z[k] = to_double(p.z());
-      }
-      u0 = u[0]; v0 = v[0]; z0 = z[0];
-      const double d = (u[1] - u[0]) * (v[2] - v[0]) - (u[2] - u[0]) * (v[1] - v[0]);
-      flat = d == 0.;
-      if(!flat) {
-        a = ((z[1] - z[0]) * (v[2] - v[0]) - (z[2] - z[0]) * (v[1] - v[0])) / d;
-        b = ((u[1] - u[0]) * (z[2] - z[0]) - (u[2] - u[0]) * (z[1] - z[0])) / d;
-      }
-    }
-    double operator()(double u, double v) const { return z0 + a * (u - u0) + b * (v - v0); }
-  };
-
   // Returns the largest error of the finite face `f`, and queues its cell if
   // the error is above `queued_above`. Each row's span is bounded
   // by the crossings of its edges, each computed from the edge's endpoints in
@@ -168,13 +142,18 @@ private:
   // their common edge, so that every cell covered is scanned.
   double scan(Face_handle f, double queued_above)
   {
-    const Plane plane(f, *this);
-    if(plane.flat) return 0.;
-    double u[3], v[3];
+    double u[3], v[3], z[3];
     for(int k = 0; k < 3; ++k) {
-      u[k] = this->u(f->vertex(k)->point());
-      v[k] = this->v(f->vertex(k)->point());
+      const Point& p = f->vertex(k)->point();
+      u[k] = this->u(p);
+      v[k] = this->v(p);
+      z[k] = to_double(p.z());
     }
+    // the linear interpolation of the heights, z[0] + a (u - u[0]) + b (v - v[0])
+    const double d = (u[1] - u[0]) * (v[2] - v[0]) - (u[2] - u[0]) * (v[1] - v[0]);
+    if(d == 0.) return 0.;  // no area in doubles: its cells are on its neighbours' edges
+    const double a = ((z[1] - z[0]) * (v[2] - v[0]) - (z[2] - z[0]) * (v[1] - v[0])) / d;
+    const double b = ((u[1] - u[0]) * (z[2] - z[0]) - (u[2] - u[0]) * (z[1] - z[0])) / d;
     const double v_lo = (std::max)(0., std::ceil((std::min)({v[0], v[1], v[2]})));
     const double v_hi = (std::min)(double(h_) - 1., std::floor((std::max)({v[0], v[1], v[2]})));
     double worst = 0.;
@@ -196,10 +175,11 @@ private:
       }
       const double i_lo = (std::max)(0., std::ceil(lo)), i_hi = (std::min)(double(w_) - 1., std::floor(hi));
       const std::size_t row_start = std::size_t(row) * w_;
+      const double row_height = z[0] + b * (row - v[0]);
       for(double i = i_lo; i <= i_hi; ++i) {
         const std::size_t cell = row_start + std::size_t(i);
         if(at_vertex_[cell]) continue;
-        const double e = std::abs(plane(i, row) - double(heights_[cell]));
+        const double e = std::abs(row_height + a * (i - u[0]) - double(heights_[cell]));
         if(e > worst) {
           worst = e;
           worst_cell = cell;
