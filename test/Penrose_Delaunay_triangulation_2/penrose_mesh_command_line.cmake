@@ -178,6 +178,15 @@ foreach(points 0 5000)
     message(FATAL_ERROR "--max-error 300 ${budget}: status ${rc}, ${vertices} vertices, max error ${max}: ${err}")
   endif()
 endforeach()
+# The border is on by default for terrains (and images), off with --no-boundary.
+foreach(option "" --no-boundary)
+  run_mesh(--terrain ${DATA}/terrain.png --points 2000 ${option} --stats-json ${WORK}/border.json)
+  file(READ ${WORK}/border.json json)
+  json_number("${json}" boundary_points border)
+  if(NOT rc EQUAL 0 OR (option AND NOT border EQUAL 0) OR (NOT option AND border LESS 20))
+    message(FATAL_ERROR "--terrain ${option}: status ${rc}, ${border} border points: ${err}")
+  endif()
+endforeach()
 foreach(c "--max-error 0|--max-error must be positive" "--max-error -1|--max-error must be positive"
           "--max-error nan|--max-error expects a number" "--base-fraction 0|--base-fraction must be in"
           "--base-fraction 1.5|--base-fraction must be in" "--boundary --no-boundary|--no-boundary, not both"
