@@ -158,28 +158,37 @@ private:
     const double v_hi = (std::min)(double(h_) - 1., std::floor((std::max)({v[0], v[1], v[2]})));
     double worst = 0.;
     std::size_t worst_cell = 0;
+    int from[3], to[3];  // each edge from its lower endpoint (in v, then u) up
+    double slope[3];
+    for(int k = 0; k < 3; ++k) {
+      from[k] = k;
+      to[k] = (k + 1) % 3;
+      if(v[to[k]] < v[from[k]] || (v[to[k]] == v[from[k]] && u[to[k]] < u[from[k]])) std::swap(from[k], to[k]);
+      slope[k] = v[to[k]] == v[from[k]] ? 0. : (u[to[k]] - u[from[k]]) / (v[to[k]] - v[from[k]]);
+    }
     for(double row = v_lo; row <= v_hi; ++row) {
       double lo = std::numeric_limits<double>::infinity(), hi = -lo;
       for(int k = 0; k < 3; ++k) {
-        int p = k, q = (k + 1) % 3;
-        if(v[q] < v[p] || (v[q] == v[p] && u[q] < u[p])) std::swap(p, q);
+        const int p = from[k], q = to[k];
         if(row < v[p] || row > v[q]) continue;
         if(v[p] == v[q]) {
           lo = (std::min)(lo, u[p]);
           hi = (std::max)(hi, u[q]);
         } else {
-          const double c = u[p] + (row - v[p]) * (u[q] - u[p]) / (v[q] - v[p]);
+          const double c = u[p] + (row - v[p]) * slope[k];
           lo = (std::min)(lo, c);
           hi = (std::max)(hi, c);
         }
       }
-      const double i_lo = (std::max)(0., std::ceil(lo)), i_hi = (std::min)(double(w_) - 1., std::floor(hi));
+      // clamped to the grid before the conversions
+      const long i_lo = long((std::min)(double(w_), (std::max)(0., std::ceil(lo))));
+      const long i_hi = long((std::max)(-1., (std::min)(double(w_) - 1., std::floor(hi))));
       const std::size_t row_start = std::size_t(row) * w_;
       const double row_height = z[0] + b * (row - v[0]);
-      for(double i = i_lo; i <= i_hi; ++i) {
+      for(long i = i_lo; i <= i_hi; ++i) {
         const std::size_t cell = row_start + std::size_t(i);
         if(at_vertex_[cell]) continue;
-        const double e = std::abs(row_height + a * (i - u[0]) - double(heights_[cell]));
+        const double e = std::abs(row_height + a * (double(i) - u[0]) - double(heights_[cell]));
         if(e > worst) {
           worst = e;
           worst_cell = cell;
