@@ -49,14 +49,16 @@ inline const char* const usage_text =
   "  --points N    scale the density so that about N points come out (default 10000);\n"
   "                for a terrain, the number of vertices (see --base-fraction)\n"
   "  --scale S     multiply the density (in points per unit area) by S instead\n"
-  "  --max-error E terrain: insert vertices until the vertical error (in the heights'\n"
-  "                unit) of every cell that the mesh covers is at most E or, if --points\n"
+  "  --max-error E terrain or image: insert vertices until the vertical error (in the\n"
+  "                heights' unit; for an image, of the luminance of its colours, from 0\n"
+  "                to 1) of every cell that the mesh covers is at most E or, if --points\n"
   "                is given, until the mesh has N vertices: whichever comes first (the\n"
   "                message and \"max_error_reached\" say which). Alone, it starts from a\n"
   "                sample of a point per 1024 cells\n"
-  "  --base-fraction F  terrain: sample F x N of the N vertices, then insert, one at a\n"
-  "                time, the centre of the cell of largest vertical error (greedy\n"
-  "                insertion, as in delatin) until N (default 0.05; 1: samples only)\n"
+  "  --base-fraction F  terrain, or image with --max-error: sample F x N of the N\n"
+  "                vertices, then insert, one at a time, the centre of the cell of\n"
+  "                largest vertical error (greedy insertion, as in delatin) until N\n"
+  "                (default 0.05; 1: samples only)\n"
   "  --region      the rectangle sampled (default 0 0 1 1; an image or a height field is\n"
   "                stretched over it, and by default covers 0 0 WIDTH HEIGHT, or the\n"
   "                extent in the header of an .asc grid)\n"
@@ -197,7 +199,9 @@ inline Options parse(int argc, const char* const* argv)
   o.boundary = have_boundary || (!no_boundary && (image || terrain));
   if(have_max_error && !(o.max_error > 0.)) usage_error("--max-error must be positive");
   if(have_base_fraction && !(o.base_fraction > 0. && o.base_fraction <= 1.)) usage_error("--base-fraction must be in (0, 1]");
-  if((have_max_error || have_base_fraction) && !terrain) usage_error("--max-error and --base-fraction apply to --terrain");
+  if((have_max_error || have_base_fraction) && !terrain && !image)
+    usage_error("--max-error and --base-fraction apply to --terrain and images");
+  if(have_base_fraction && image && !have_max_error) usage_error("--base-fraction applies to an image with --max-error");
   if(have_base_fraction && have_max_error && !have_points) usage_error("--base-fraction is a fraction of --points: give both");
   return o;
 }

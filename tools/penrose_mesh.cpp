@@ -81,6 +81,7 @@ struct Input
   std::string file;
   Raster<float> colours;    // 3 channels, display values in [0, 1]; empty unless an image
   Raster<double> heights;   // scaled; empty unless a terrain
+  Raster<double> intensity; // the luminance of the colours; empty unless an image with --max-error
   Raster<double> density;   // empty for the built-in densities
 };
 
@@ -97,6 +98,11 @@ Input read_image(const Options& o)
   in.density.values = CGAL::IO::luminance(img);
   if(img.high_dynamic_range)
     for(float& v : img.values) v = std::pow(std::min(std::max(v, 0.f), 1.f), 1.f / 2.2f);
+  if(o.max_error > 0.) {  // of the display values, which --reconstruct draws
+    in.intensity.width = img.width;
+    in.intensity.height = img.height;
+    in.intensity.values = CGAL::IO::luminance(img);
+  }
   in.colours.values = std::move(img.values);
   std::vector<double>& d = in.density.values;
   if(o.log) penrose_tools::log_transform(d);
@@ -143,7 +149,7 @@ Input read_terrain(const Options& o)
 void place(Input& in, const Options& o)
 {
   const double* r = o.region;
-  for(auto* d : {&in.heights, &in.density}) { d->x0 = r[0]; d->y0 = r[1]; d->x1 = r[2]; d->y1 = r[3]; }
+  for(auto* d : {&in.heights, &in.intensity, &in.density}) { d->x0 = r[0]; d->y0 = r[1]; d->x1 = r[2]; d->y1 = r[3]; }
   in.colours.x0 = r[0]; in.colours.y0 = r[1]; in.colours.x1 = r[2]; in.colours.y1 = r[3];
   if(o.viewer_given) penrose_tools::weight_by_viewer(in.density, o.viewer[0], o.viewer[1]);
 }
@@ -543,12 +549,14 @@ void run(Options o)
   const Density d = make_density(o, in, region);
   time.read = seconds_since(start);
 
-  const Raster<double>& heights = in.heights;
+  // the grid that greedy insertion refines, and the vertices' z
+  const Raster<double>& heights = in.heights.values.empty() ? in.intensity : in.heights;
   auto lift = [&heights](double x, double y) { return K::Point_3(x, y, heights.values.empty() ? 0. : heights(x, y)); };
-  // A terrain's mesh is sampled for a fraction of its vertices, the rest
-  // inserted greedily. With --max-error alone the count is not known: the
-  // sample is sparse, a point per 1024 cells, and greedy insertion, which
-  // needs the fewest vertices for a given error, does the rest.
+  // A terrain's mesh, and an image's with --max-error, is sampled for a
+  // fraction of its vertices, the rest inserted greedily. With --max-error
+  // alone the count is not known: the sample is sparse, a point per 1024
+  // cells, and greedy insertion, which needs the fewest vertices for a given
+  // error, does the rest.
   const bool greedy = !heights.values.empty() && (o.max_error > 0. || (o.points > 0. && o.base_fraction < 1.));
   const bool bounded = o.points_given || o.max_error == 0.;
   const std::size_t budget = greedy && bounded ? std::size_t(o.points) : std::numeric_limits<std::size_t>::max();

@@ -178,6 +178,17 @@ foreach(points 0 5000)
     message(FATAL_ERROR "--max-error 300 ${budget}: status ${rc}, ${vertices} vertices, max error ${max}: ${err}")
   endif()
 endforeach()
+# An image's luminance refined to 0.05: fewer vertices than pixels, above the grid.
+run_mesh(--density image:${DATA}/test_image.png --max-error 0.05 --stats-json ${WORK}/image_max_error.json)
+file(READ ${WORK}/image_max_error.json json)
+json_number("${json}" vertices vertices)
+json_number("${json}" psnr psnr)
+json_number("${json}" grid_psnr grid_psnr)
+if(NOT rc EQUAL 0 OR NOT json MATCHES "\"max_error_reached\": true" OR NOT vertices LESS 26214
+   OR NOT psnr GREATER grid_psnr)
+  message(FATAL_ERROR "image --max-error 0.05: status ${rc}, ${vertices} vertices, PSNR ${psnr} (grid ${grid_psnr}): ${err}")
+endif()
+
 # The border is on by default for terrains (and images), off with --no-boundary.
 foreach(option "" --no-boundary)
   run_mesh(--terrain ${DATA}/terrain.png --points 2000 ${option} --stats-json ${WORK}/border.json)
@@ -201,8 +212,12 @@ foreach(c "--max-error 0|--max-error must be positive" "--max-error -1|--max-err
   endif()
 endforeach()
 run_mesh(--density constant --max-error 1)
-if(NOT rc EQUAL 2 OR NOT err MATCHES "--max-error and --base-fraction apply to --terrain")
+if(NOT rc EQUAL 2 OR NOT err MATCHES "--max-error and --base-fraction apply to --terrain and images")
   message(FATAL_ERROR "--density constant --max-error 1: got ${rc}: ${err}")
+endif()
+run_mesh(--density image:${DATA}/test_image.png --base-fraction 0.5)
+if(NOT rc EQUAL 2 OR NOT err MATCHES "--base-fraction applies to an image with --max-error")
+  message(FATAL_ERROR "image --base-fraction 0.5: got ${rc}: ${err}")
 endif()
 
 # A count beyond std::size_t is refused, not wrapped around (1e30 gave 0 points).
