@@ -27,12 +27,70 @@
 #  include <tbb/task_group.h>
 #endif
 
+#if defined(__SANITIZE_THREAD__)
+#  define CGAL_PENROSE_THREAD_SANITIZER 1
+#elif defined(__has_feature)
+#  if __has_feature(thread_sanitizer)
+#    define CGAL_PENROSE_THREAD_SANITIZER 1
+#  endif
+#endif
+#if defined(CGAL_PENROSE_THREAD_SANITIZER)
+#  include <sanitizer/tsan_interface.h>
+#  include <utility>
+#endif
+
 namespace CGAL {
 namespace internal {
 namespace Penrose {
 
 template <class ConcurrencyTag>
 constexpr bool is_parallel = std::is_convertible<ConcurrencyTag, Parallel_tag>::value;
+
+#if defined(CGAL_PENROSE_THREAD_SANITIZER)
+// Under ThreadSanitizer, a task's function tells it of the hand-offs that
+// TBB's library, which is not instrumented, makes: a task starts after its
+// function was copied into it, and the thread that waits for the tasks goes
+// on after them, whether they returned or threw (Tasks_ended, from its
+// creation to its end). Elsewhere the function is used as it is.
+inline char& tasks_started() { static char tag; return tag; }
+inline char& tasks_finished() { static char tag; return tag; }
+
+struct Tasks_ended
+{
+  ~Tasks_ended() { __tsan_acquire(&tasks_finished()); }
+};
+
+template <class F>
+struct Task_function
+{
+  explicit Task_function(const F& f) : f(f) { __tsan_release(&tasks_started()); }
+  Task_function(const Task_function& other) : f((__tsan_acquire(&tasks_started()), other.f))
+  {
+    __tsan_release(&tasks_started());
+  }
+
+  template <class... Args>
+  void operator()(Args&&... args) const
+  {
+    struct Finished
+    {
+      ~Finished() { __tsan_release(&tasks_finished()); }
+    } finished;
+    __tsan_acquire(&tasks_started());
+    f(std::forward<Args>(args)...);
+  }
+
+  F f;
+};
+
+template <class F>
+Task_function<F> task(const F& f) { return Task_function<F>(f); }
+#else
+template <class F>
+const F& task(const F& f) { return f; }
+
+struct Tasks_ended {};
+#endif
 
 // Runs `background()` and `foreground()`, which must not depend on each
 // other, and returns once both are done. `foreground()` runs on the calling
@@ -43,8 +101,9 @@ void run_beside(const Background& background, const Foreground& foreground)
 {
 #if defined(CGAL_LINKED_WITH_TBB)
   if constexpr(is_parallel<ConcurrencyTag>) {
+    [[maybe_unused]] const Tasks_ended ended;
     tbb::task_group group;
-    group.run([&background] { background(); });
+    group.run(task([&background] { background(); }));
     try {
       foreground();
     } catch(...) {
@@ -96,8 +155,9 @@ void for_each_block(std::size_t n, std::size_t grain, const Block& block)
 {
 #if defined(CGAL_LINKED_WITH_TBB)
   if constexpr(is_parallel<ConcurrencyTag>) {
+    [[maybe_unused]] const Tasks_ended ended;
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, grain),
-                      [&block](const tbb::blocked_range<std::size_t>& r) { block(r.begin(), r.end()); });
+                      task([&block](const tbb::blocked_range<std::size_t>& r) { block(r.begin(), r.end()); }));
     return;
   }
 #endif
