@@ -352,7 +352,7 @@ void expect_pieces_run_once_and_rethrow()
     }
   }
 
-  const std::size_t n = 5 * walk_block + 17;
+  constexpr std::size_t n = 5 * walk_block + 17;
   std::vector<int> seen(n, 0);
   for_each_block<ConcurrencyTag>(n, 1000, [&seen](std::size_t b, std::size_t e) {
     for(std::size_t k = b; k < e; ++k) ++seen[k];
@@ -369,7 +369,7 @@ void expect_pieces_run_once_and_rethrow()
   EXPECT_TRUE(found == expected);
   std::string message;
   try {
-    gather_in_blocks<std::size_t, ConcurrencyTag>(n, [n](std::size_t b, std::size_t e, std::vector<std::size_t>&) {
+    gather_in_blocks<std::size_t, ConcurrencyTag>(n, [](std::size_t b, std::size_t e, std::vector<std::size_t>&) {
       if(b <= n - 1 && n - 1 < e) throw std::runtime_error("the last item");
     });
   } catch(const std::runtime_error& e) {
