@@ -22,6 +22,7 @@
 
 #include <stb/stb_image_write.h>
 
+#include "border_points.h"
 #include "mesh_options.h"
 #include "mesh_raster.h"
 #include "progress_bar.h"
@@ -228,30 +229,22 @@ void triangulate(Mesh& m, const Sampler& sampler, const Lift& lift, penrose_tool
   }, CGAL::parameters::callback(progress));
 }
 
-// Points along the border, counter-clockwise from the lower left corner,
-// spaced by the mean distance of blue-noise samples at the local density,
-// 1.07 / sqrt(density) (that of a hexagonal packing); inserted with insert().
+// The points along the border (see for_each_border_point()), inserted with insert().
 template <class Lift>
 std::size_t add_boundary(Mesh& m, const Options& o, const Density& d, double scale, const Lift& lift)
 {
-  const double c[5][2] = {{o.region[0], o.region[1]}, {o.region[2], o.region[1]}, {o.region[2], o.region[3]},
-                          {o.region[0], o.region[3]}, {o.region[0], o.region[1]}};
   const std::size_t before = m.points.size();
   Triangulation::Face_handle hint;
-  for(int side = 0; side < 4; ++side) {
-    const double dx = c[side + 1][0] - c[side][0], dy = c[side + 1][1] - c[side][1], length = std::hypot(dx, dy);
-    for(double t = 0.; t < length;) {
-      const Point p(c[side][0] + dx * t / length, c[side][1] + dy * t / length);
-      const double rho = scale * d.value(p);
-      t += rho > 0. ? std::max(1.07 / std::sqrt(rho), 1e-9 * length) : length;
+  penrose_tools::for_each_border_point({o.region[0], o.region[1], o.region[2], o.region[3]},
+    [&](double x, double y) { return scale * d.value(Point(x, y)); },
+    [&](double x, double y) {
       const std::size_t n = m.t.number_of_vertices();
-      const Vertex_handle v = m.t.insert(lift(p.x(), p.y()), hint);
+      const Vertex_handle v = m.t.insert(lift(x, y), hint);
       if(m.t.number_of_vertices() > n) v->info() = m.points.size();
-      m.points.push_back(p);
+      m.points.emplace_back(x, y);
       m.vertex.push_back(v);
       hint = v->face();
-    }
-  }
+    });
   return m.points.size() - before;
 }
 
