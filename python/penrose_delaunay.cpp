@@ -62,11 +62,16 @@ void check_rectangle(const char* name, const std::array<double, 4>& r)
     throw std::invalid_argument(std::string("the ") + name + " must be (x0, y0, x1, y1), finite, with x0 <= x1 and y0 <= y1");
 }
 
-// The density in the sampler's terms: its value, and a bound over boxes where one is known.
+// The density in the sampler's terms: its value, a bound over boxes where
+// one is known, and how the walk along the border evaluates it where that
+// differs from `value`.
 struct Density
 {
   std::function<double(const Point&)> value;
   std::function<double(const Rectangle&)> upper_bound;  // empty: the sampler probes
+  std::function<double(double, double)> on_border;      // empty: `value`
+
+  double at_border(double x, double y) const { return on_border ? on_border(x, y) : value(Point(x, y)); }
 };
 
 // A numpy array that owns `v`, without a copy.
@@ -120,8 +125,7 @@ struct Mesh
 
 // The vertices are numbered in the order the construction reports them, then
 // the border points; the finite faces in the triangulation's order.
-Mesh triangulate_samples(const Request& r, const Density& d, bool boundary, bool neighbors,
-                         const std::function<double(double, double)>& border_density)
+Mesh triangulate_samples(const Request& r, const Density& d, bool boundary, bool neighbors)
 {
   const std::unique_ptr<Sampler> sampler = make_sampler(r, d);
   Mesh m;
@@ -137,7 +141,7 @@ Mesh triangulate_samples(const Request& r, const Density& d, bool boundary, bool
   if(boundary) {
     const double scale = sampler->density_scale();
     Triangulation::Face_handle hint;
-    penrose_tools::for_each_border_point(r.region, [&](double x, double y) { return scale * border_density(x, y); },
+    penrose_tools::for_each_border_point(r.region, [&](double x, double y) { return scale * d.at_border(x, y); },
                                          [&](double x, double y) {
       const std::size_t before = t.number_of_vertices();
       const Triangulation::Vertex_handle v = t.insert(Point(x, y), hint);
@@ -255,18 +259,18 @@ auto with_density(const py::object& object, std::optional<std::array<double, 4>>
     std::function<double(double, double)> guess = [](double, double) { return 0.; };
     auto table = std::make_shared<Density_table>([&guess](double x, double y) { return guess(x, y); });
     guess = grid_guess(*table, f, r);
-    const Density d{[table](const Point& p) { return (*table)(p.x(), p.y()); }, {}};
     // The border is walked point after point, each step set by the density
     // at the last point: a few thousand calls at most, made one at a time.
-    const std::function<double(double, double)> at = [&f](double x, double y) {
+    auto on_border = [&f](double x, double y) {
       py::gil_scoped_acquire acquire;
       const py::array_t<double, py::array::forcecast> v =
         f(py::array_t<double>(1, &x), py::array_t<double>(1, &y));
       if(v.size() != 1) throw std::invalid_argument("the density function did not return one value for one point");
       return *v.data();
     };
+    const Density d{[table](const Point& p) { return (*table)(p.x(), p.y()); }, {}, on_border};
     if(sample_first) run_on_table(*table, f, [&] { return sample_coordinates(r, d).size(); });
-    return run_on_table(*table, f, [&] { return construct(d, at); });
+    return run_on_table(*table, f, [&] { return construct(d); });
   }
   if(py::isinstance<py::array>(object)) {
     const auto a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(object);
@@ -279,10 +283,9 @@ auto with_density(const py::object& object, std::optional<std::array<double, 4>>
       width, height, std::vector<double>(a.data(), a.data() + a.size()),
       Rectangle(r.region[0], r.region[1], r.region[2], r.region[3]));
     const Density d{[raster](const Point& p) { return (*raster)(p); },
-                    [raster](const Rectangle& b) { return raster->upper_bound(b); }};
-    const std::function<double(double, double)> at = [raster](double x, double y) { return (*raster)(Point(x, y)); };
+                    [raster](const Rectangle& b) { return raster->upper_bound(b); }, {}};
     py::gil_scoped_release release;
-    return construct(d, at);
+    return construct(d);
   }
   double c;
   try {
@@ -293,10 +296,9 @@ auto with_density(const py::object& object, std::optional<std::array<double, 4>>
   if(!(c >= 0. && std::isfinite(c)))
     throw std::invalid_argument("the density must be finite and non-negative, not " + std::to_string(c));
   r.region = region.value_or(std::array<double, 4>{0., 0., 1., 1.});
-  const Density d{[c](const Point&) { return c; }, [c](const Rectangle&) { return c; }};
-  const std::function<double(double, double)> at = [c](double, double) { return c; };
+  const Density d{[c](const Point&) { return c; }, [c](const Rectangle&) { return c; }, {}};
   py::gil_scoped_release release;
-  return construct(d, at);
+  return construct(d);
 }
 
 Request make_request(const std::optional<py::object>& n, const std::optional<double>& scale, bool correction)
@@ -328,7 +330,7 @@ py::array_t<double> sample(const py::object& density, const std::optional<std::a
   Request r = make_request(n, scale, correction);
   if(window) check_rectangle("window", *window);
   r.window = window;
-  std::vector<double> xy = with_density(density, region, r, false, [&r](const Density& d, const auto&) {
+  std::vector<double> xy = with_density(density, region, r, false, [&r](const Density& d) {
     return sample_coordinates(r, d);
   });
   const std::size_t rows = xy.size() / 2;
@@ -340,8 +342,8 @@ py::tuple triangulate(const py::object& density, const std::optional<std::array<
                       bool boundary, bool neighbors)
 {
   Request r = make_request(n, scale, correction);
-  Mesh m = with_density(density, region, r, true, [&](const Density& d, const std::function<double(double, double)>& at) {
-    return triangulate_samples(r, d, boundary, neighbors, at);
+  Mesh m = with_density(density, region, r, true, [&](const Density& d) {
+    return triangulate_samples(r, d, boundary, neighbors);
   });
   const std::size_t vertices = m.xy.size() / 2, faces = m.simplices.size() / 3;
   py::array_t<double> points = to_numpy(std::move(m.xy), vertices, 2);
