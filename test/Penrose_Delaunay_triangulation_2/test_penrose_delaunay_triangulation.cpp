@@ -10,6 +10,7 @@
 // triangulation, and errors, with Parallel_tag on any number of threads.
 
 #include <CGAL/Penrose_Delaunay_triangulation_2.h>
+#include <CGAL/Raster_density_2.h>
 
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
@@ -193,45 +194,69 @@ TEST(Triangulation, LargeEnoughToSplitEveryWalkMatchesCgal)
 #if defined(CGAL_LINKED_WITH_TBB)
 typedef CGAL::Penrose_Delaunay_triangulation_2<Epick, CGAL::Default, CGAL::Parallel_tag> Parallel_pdt;
 
+// Parallel_tag on 1, 2, 3 and 8 threads gives the triangulation of
+// `sequential`, built from `s` with Sequential_tag: the same vertices, edges
+// and statistics (the base mesh is split the same way); the callback is only
+// called from the calling thread.
+void expect_every_thread_count_as_sequential(const Sampler& s, const CGAL::Penrose_Delaunay_triangulation_2<Epick>& sequential,
+                                             const std::string& what)
+{
+  const std::set<Edge_key> edges = edge_set(sequential, xy_of);
+  for(std::size_t threads : {1, 2, 3, 8}) {
+    const std::string where = what + ", Parallel_tag on " + std::to_string(threads) + " threads";
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+    const std::thread::id caller = std::this_thread::get_id();
+    bool called_elsewhere = false;
+    const std::function<bool(double)> callback = [&](double) {
+      called_elsewhere |= std::this_thread::get_id() != caller;
+      return true;
+    };
+    Parallel_pdt parallel;
+    ASSERT_TRUE(parallel.build(s, [](double x, double y) { return Point(x, y); },
+                               [](Parallel_pdt::Vertex_handle, const Sampler::Sample&) {},
+                               CGAL::parameters::callback(callback))) << where;
+    EXPECT_FALSE(called_elsewhere) << where;
+    EXPECT_TRUE(parallel.is_valid()) << where;
+    EXPECT_EQ(parallel.number_of_vertices(), sequential.number_of_vertices()) << where;
+    EXPECT_TRUE(edge_set(parallel, xy_of) == edges) << where;
+    const auto& a = parallel.construction_statistics();
+    const auto& b = sequential.construction_statistics();
+    EXPECT_EQ(a.flips, b.flips) << where;
+    EXPECT_EQ(a.base_vertices, b.base_vertices) << where;
+    EXPECT_EQ(a.removed_vertices, b.removed_vertices) << where;
+    EXPECT_EQ(a.repaired_vertices, b.repaired_vertices) << where;
+    EXPECT_EQ(a.fallbacks, b.fallbacks) << where;
+  }
+}
+
 TEST(Triangulation, EveryTagAndThreadCountGivesCgalsTriangulation)
 {
-  // Parallel_tag on 1, 2, 3 and 8 threads gives the triangulation of
-  // Sequential_tag (the same vertices, edges and statistics: the base mesh
-  // is split the same way) and of Delaunay_triangulation_2; the callback is
-  // only called from the calling thread
   for(const auto& d : builtin_densities()) {
     if(d.first == "radial") continue;
     const Sampler s(unit_square, d.second, CGAL::parameters::number_of_output_points(150000));
     const CGAL::Penrose_Delaunay_triangulation_2<Epick> sequential(s);
     std::vector<Point> points;
     expect_built_as_cgal(sequential, s, d.first + " Sequential_tag", points);
-    const std::set<Edge_key> edges = edge_set(sequential, xy_of);
-    for(std::size_t threads : {1, 2, 3, 8}) {
-      const std::string what = d.first + " Parallel_tag on " + std::to_string(threads) + " threads";
-      tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
-      const std::thread::id caller = std::this_thread::get_id();
-      bool called_elsewhere = false;
-      const std::function<bool(double)> callback = [&](double) {
-        called_elsewhere |= std::this_thread::get_id() != caller;
-        return true;
-      };
-      Parallel_pdt parallel;
-      ASSERT_TRUE(parallel.build(s, [](double x, double y) { return Point(x, y); },
-                                 [](Parallel_pdt::Vertex_handle, const Sampler::Sample&) {},
-                                 CGAL::parameters::callback(callback))) << what;
-      EXPECT_FALSE(called_elsewhere) << what;
-      EXPECT_TRUE(parallel.is_valid()) << what;
-      EXPECT_EQ(parallel.number_of_vertices(), sequential.number_of_vertices()) << what;
-      EXPECT_TRUE(edge_set(parallel, xy_of) == edges) << what;
-      const auto& a = parallel.construction_statistics();
-      const auto& b = sequential.construction_statistics();
-      EXPECT_EQ(a.flips, b.flips) << what;
-      EXPECT_EQ(a.base_vertices, b.base_vertices) << what;
-      EXPECT_EQ(a.removed_vertices, b.removed_vertices) << what;
-      EXPECT_EQ(a.repaired_vertices, b.repaired_vertices) << what;
-      EXPECT_EQ(a.fallbacks, b.fallbacks) << what;
-    }
+    expect_every_thread_count_as_sequential(s, sequential, d.first);
   }
+}
+
+TEST(Triangulation, EveryThreadCountOnARasterGivesCgalsTriangulation)
+{
+  // a raster with steps between its pixels and empty pixels, as an image
+  // has, read from TBB's threads through its max pyramid
+  const std::size_t w = 96, h = 64;
+  std::vector<double> values(w * h);
+  CGAL::Random r(7);
+  for(double& v : values) v = r.get_int(0, 8) == 0 ? 0. : r.get_double(0.05, 1.);
+  const Epick::Iso_rectangle_2 region(0, 0, 1.5, 1);
+  const CGAL::Raster_density_2<Epick> raster(w, h, values, region);
+  const Sampler s(region, raster, CGAL::parameters::density_upper_bound(raster.upper_bound_function(),
+                                      CGAL::parameters::number_of_output_points(150000)));
+  const CGAL::Penrose_Delaunay_triangulation_2<Epick> sequential(s);
+  std::vector<Point> points;
+  expect_built_as_cgal(sequential, s, "raster, Sequential_tag", points);
+  expect_every_thread_count_as_sequential(s, sequential, "raster");
 }
 #endif
 
@@ -466,6 +491,35 @@ TEST(Triangulation, RandomRegionsAndDensitiesMatchCgal)
   std::cout << matched << " cases matched CGAL, " << refused << " refused as too fine for doubles\n";
   EXPECT_GT(matched, 0) << "no case was compared with CGAL";
 }
+
+#if defined(CGAL_LINKED_WITH_TBB)
+TEST(Triangulation, EveryThreadCountOnRandomCasesGivesCgalsTriangulation)
+{
+  // the first random cases, at a size where every walk is split in tasks;
+  // those that doubles cannot hold are refused as above
+  int matched = 0;
+  for(int seed = 1; seed <= 6; ++seed) {
+    Random_case c = random_case(seed);
+    c.n = 100000;
+    try {
+      const auto np = CGAL::parameters::use_correction_vectors(c.correct, CGAL::parameters::number_of_output_points(c.n));
+      const Sampler s = c.bound ? Sampler(c.region, c.density, CGAL::parameters::density_upper_bound(c.bound, np))
+                                : Sampler(c.region, c.density, np);
+      const CGAL::Penrose_Delaunay_triangulation_2<Epick> sequential(s);
+      std::vector<Point> points;
+      expect_built_as_cgal(sequential, s, c.what, points);
+      expect_every_thread_count_as_sequential(s, sequential, c.what);
+      ++matched;
+    } catch(const std::range_error& e) {
+      EXPECT_TRUE(may_be_refused(c)) << c.what << ": refused: " << e.what();
+    } catch(const std::invalid_argument& e) {
+      EXPECT_TRUE(may_be_refused(c)) << c.what << ": refused: " << e.what();
+    }
+  }
+  std::cout << matched << " of 6 cases matched on every thread count\n";
+  EXPECT_GE(matched, 3) << "too few random cases were compared";
+}
+#endif
 
 TEST(Triangulation, WithoutCorrectionCocircularPointsMatchCgal)
 {
