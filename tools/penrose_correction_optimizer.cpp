@@ -11,7 +11,7 @@
 //
 // It writes a C++ header; the command line that made it is recorded there.
 
-#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Depth_first_sampling.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/internal/tiling/Depth_first_sampling.h>
 
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -224,7 +224,7 @@ int main(int argc, char** argv)
          "// structural index; entries (a, b) in leaf scales, along u(d_leaf) and u(d_leaf + 5).\n\n"
          "#ifndef CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_CORRECTION_VECTORS_H\n"
          "#define CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_CORRECTION_VECTORS_H\n\n"
-         "#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Correction_table.h>\n\n"
+         "#include <CGAL/Penrose_Delaunay_triangulation_2/internal/tiling/Correction_table.h>\n\n"
          "namespace CGAL {\nnamespace internal {\nnamespace Penrose {\n\n"
          "inline const Correction_table& default_correction_table()\n{\n"
          "  static const float vectors[] = {\n";

@@ -5,10 +5,10 @@
 #define CGAL_PENROSE_IMPORTANCE_SAMPLER_H
 
 #include <CGAL/Penrose_Delaunay_triangulation_2/named_parameters.h>
-#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Depth_first_sampling.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/internal/tiling/Depth_first_sampling.h>
 #include <CGAL/Penrose_Delaunay_triangulation_2/internal/Sampler_access.h>
-#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Sampling_context.h>
-#include <CGAL/Penrose_Delaunay_triangulation_2/internal/correction_vectors.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/internal/tiling/Sampling_context.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/internal/tiling/correction_vectors.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Named_function_parameters.h>

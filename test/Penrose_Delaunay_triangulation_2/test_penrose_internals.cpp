@@ -8,7 +8,7 @@
 // predicates and the size checks.
 
 #include <CGAL/Penrose_Delaunay_triangulation_2.h>
-#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Tile_tree.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/internal/tiling/Tile_tree.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Random.h>

@@ -8,7 +8,7 @@
 #ifndef CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_CONSTRUCTION_SIZE_H
 #define CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_CONSTRUCTION_SIZE_H
 
-#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Base_triangulation_builder.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/internal/base_mesh/Base_triangulation_builder.h>
 #include <CGAL/Penrose_Delaunay_triangulation_2/internal/Size_limits.h>
 
 namespace CGAL {

@@ -7,7 +7,7 @@
 #ifndef CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_SAMPLER_ACCESS_H
 #define CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_SAMPLER_ACCESS_H
 
-#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Sampling_context.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/internal/tiling/Sampling_context.h>
 
 namespace CGAL {
 

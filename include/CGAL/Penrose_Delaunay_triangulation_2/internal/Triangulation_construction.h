@@ -2,25 +2,27 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The construction of Penrose_Delaunay_triangulation_2 (steps 1 to 4 of its
-// documentation): the base mesh of the tile tree, framed; the vertices that
-// are not samples removed; the samples moved; Lawson flips; the flat mesh
-// written into the TDS; what local repair could not place left to insert()
+// documentation), one stage a folder: the base mesh of the tile tree
+// (tiling/, base_mesh/), framed; the vertices that are not samples removed,
+// the samples moved and Lawson flips (flat_mesh/); the flat mesh written
+// into the TDS (tds/); what local repair could not place left to insert()
 // and remove(). With Parallel_tag, the walks that are bound by memory are
-// split in TBB tasks, and the TDS's storage is made beside the flips (see
-// Concurrency.h and Tds_reservation.h); the base mesh's builder runs the
-// density in tasks of its own.
+// split in TBB tasks, and the TDS's storage is made beside the flips
+// (parallel/); the base mesh's builder runs the density in tasks of its own.
 
 #ifndef CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_TRIANGULATION_CONSTRUCTION_H
 #define CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_TRIANGULATION_CONSTRUCTION_H
 
-#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Base_triangulation_builder.h>
 #include <CGAL/Penrose_Delaunay_triangulation_2/internal/Construction_size.h>
-#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Flat_mesh.h>
-#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Flat_mesh_delaunay.h>
-#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Flat_mesh_editing.h>
 #include <CGAL/Penrose_Delaunay_triangulation_2/internal/Sampler_access.h>
-#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Tds_reservation.h>
-#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Concurrency.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/internal/base_mesh/Base_triangulation_builder.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/internal/flat_mesh/Flat_mesh.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/internal/flat_mesh/Flat_mesh_delaunay.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/internal/flat_mesh/Flat_mesh_editing.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/internal/flat_mesh/Flat_mesh_frame.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/internal/parallel/Concurrency.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/internal/tds/Tds_reservation.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/internal/tds/Tds_writing.h>
 
 #include <CGAL/assertions.h>
 
@@ -42,7 +44,6 @@ class Triangulation_construction
 {
   typedef typename Triangulation::Triangulation_data_structure Tds;
   typedef typename Triangulation::Vertex_handle Vertex_handle;
-  typedef typename Triangulation::Face_handle Face_handle;
   typedef typename Triangulation::Concurrency_tag Concurrency_tag;
   typedef Flat_mesh::Index Index;
   typedef Tds_reservation<Tds> Reservation;
@@ -86,7 +87,7 @@ public:
     }
     const std::size_t n = target.size();
     auto kept = [&](std::size_t v) { return !std::isnan(target[v].first); };
-    const std::array<Index, 3> frame = add_frame(mesh, context);
+    const std::array<Index, 3> frame = add_frame(mesh);
 
     Flat_mesh_editor editor(mesh);
     const std::vector<Index> inactive = inactive_vertices(mesh, n, kept, stats.base_vertices);
@@ -108,7 +109,7 @@ public:
                                 [&] { stats.flips = make_delaunay(mesh); });
     if(!proceed(0.84)) return abandon();
 
-    auto handle = write_tds(tr, mesh, lift, *reservation, frame[0]);
+    auto handle = write_tds<Concurrency_tag>(tr, mesh, lift, *reservation, frame[0]);
     mesh = Flat_mesh();
     if(!proceed(0.99)) return abandon();
     for(Index v : stuck) tr.remove(handle[v]);
@@ -120,7 +121,6 @@ public:
       if(handle[vp.first] != Vertex_handle()) on_vertex(handle[vp.first], Sampler_access::sample(sampler, vp.second));
     return proceed(1.) || abandon();
   }
-
 
 private:
   // The peak of a construction: the flat mesh (about 100 bytes per point at
@@ -154,139 +154,6 @@ private:
     in_mesh = present;
     return inactive;
   }
-
-  // Three far vertices and the triangles between them and the root tile, so
-  // that every vertex of the tile tree is interior. The root tile's boundary
-  // is walked counter-clockwise from its corner 0: its edge e runs from
-  // corner e to corner e + 1, and the vertices 0, 1, 2 are those corners.
-  static std::array<Index, 3> add_frame(Flat_mesh& m, const Sampling_context& c)
-  {
-    double cx = 0., cy = 0.;
-    for(int i = 0; i < 3; ++i) { cx += c.root_x(i) / 3.; cy += c.root_y(i) / 3.; }
-    std::array<Index, 3> w;
-    for(int e = 0; e < 3; ++e) {
-      const double mx = 0.5 * (c.root_x(e) + c.root_x((e + 1) % 3)) - cx;
-      const double my = 0.5 * (c.root_y(e) + c.root_y((e + 1) % 3)) - cy;
-      w[e] = m.add_vertex(cx + 8. * mx, cy + 8. * my);
-    }
-    // Each boundary edge a -> b of root edge e gets the face (b, a, w[e])
-    // outside it; consecutive ones share their edge from b to w[e], and at
-    // corner e the face (w[e - 1], w[e], e) closes the gap.
-    Index first = Flat_mesh::null, previous = Flat_mesh::null;
-    Index a = 0;
-    int e = 0;
-    do {
-      const auto [f, i] = boundary_edge_from(m, a);
-      const Index b = m.faces[f].v[Flat_mesh::cw(i)];
-      const Index g = m.create_face(b, a, w[e]);
-      m.link(g, 2, f, i);
-      if(previous == Flat_mesh::null) first = g;
-      else if(a < 3) close_corner(m, w, e, previous, g);
-      else m.link(previous, 1, g, 0);
-      previous = g;
-      a = b;
-      if(a < 3) e = int(a);
-    } while(a != 0);
-    close_corner(m, w, 0, previous, first);
-    return w;
-  }
-
-  // The boundary edge of the flat mesh that leaves its vertex b, as (face,
-  // edge index): the faces around b are turned clockwise until there is
-  // nothing across.
-  static std::pair<Index, int> boundary_edge_from(const Flat_mesh& m, Index b)
-  {
-    Index f = m.vertex_face[b];
-    for(Index g = m.cw_face_around(f, b); g != Flat_mesh::null; g = m.cw_face_around(f, b)) f = g;
-    return {f, Flat_mesh::cw(m.index_of_vertex(f, b))};
-  }
-
-  // The corner face (w[e - 1], w[e], e) between the frame faces `before` and
-  // `after` of root corner e.
-  static void close_corner(Flat_mesh& m, const std::array<Index, 3>& w, int e, Index before, Index after)
-  {
-    const Index h = m.create_face(w[(e + 2) % 3], w[e], Index(e));
-    m.link(before, 1, h, 1);
-    m.link(h, 0, after, 0);
-  }
-
-  // Writes the flat mesh, a disk whose boundary passes through its vertex
-  // `on_boundary`, into the TDS of `reservation`, which then becomes that of
-  // `tr`; the mesh's coordinates are released as soon as the TDS
-  // vertices hold them.
-  template <class Lift>
-  static std::vector<Vertex_handle> write_tds(Triangulation& tr, Flat_mesh& m, const Lift& lift,
-                                               Reservation& reservation, Index on_boundary)
-  {
-    constexpr std::size_t ahead = Flat_mesh::fetch_distance;
-    Tds& prepared_tds = reservation.tds;
-    const Vertex_handle infinite = prepared_tds.create_vertex();
-    std::vector<Vertex_handle> vh(m.vertex_face.size());
-    for(std::size_t v = 0; v < vh.size(); ++v)
-      if(m.vertex_face[v] != Flat_mesh::null) {
-        vh[v] = prepared_tds.create_vertex();
-        vh[v]->set_point(lift(m.points[v].x(), m.points[v].y()));
-      }
-    decltype(m.points)().swap(m.points);
-    Tds& tds = tr.tds();
-    tds.swap(prepared_tds);
-    tr.set_infinite_vertex(infinite);
-    tds.set_dimension(2);
-    // the edges without a face across, counter-clockwise
-    std::vector<std::pair<Index, int>> boundary;
-    Index next = on_boundary;
-    do {
-      boundary.push_back(boundary_edge_from(m, next));
-      next = m.faces[boundary.back().first].v[Flat_mesh::cw(boundary.back().second)];
-    } while(next != on_boundary);
-    // The TDS face of flat face f, dead or alive, is the f-th made.
-    const typename Reservation::Faces& made = reservation.made;
-    CGAL_assertion(made.size() == m.faces.size());
-    // Each face's vertices and neighbours, and each vertex's face, change no
-    // container: bound by memory, they are written in blocks.
-    // The dead faces, found on the way, are never faces of the triangulation.
-    auto write_faces = [&m, &made, &vh](std::size_t begin, std::size_t end, std::vector<Index>& dead) {
-      for(std::size_t f = begin; f < end; ++f) {
-        if(f + ahead < end)
-          for(Index v : m.faces[f + ahead].v) CGAL_PENROSE_PREFETCH(&vh[v]);
-        if(!m.face_alive[f]) {
-          dead.push_back(Index(f));
-          continue;
-        }
-        const Flat_mesh::Face& F = m.faces[f];
-        const Face_handle h = made[f];
-        h->set_vertices(vh[F.v[0]], vh[F.v[1]], vh[F.v[2]]);
-        for(int i = 0; i < 3; ++i)
-          if(F.n[i] != Flat_mesh::null) h->set_neighbor(i, made[F.n[i]]);
-      }
-    };
-    auto give_vertices_a_face = [&m, &made, &vh](std::size_t begin, std::size_t end) {
-      for(std::size_t v = begin; v < end; ++v)
-        if(vh[v] != Vertex_handle()) vh[v]->set_face(made[m.vertex_face[v]]);
-    };
-    const std::vector<Index> dead = gather_in_blocks<Index, Concurrency_tag>(m.faces.size(), write_faces);
-    for_each_block<Concurrency_tag>(vh.size(), walk_block, give_vertices_a_face);
-    for(Index f : dead) tds.faces().erase(made[f]);
-    std::vector<std::pair<Vertex_handle, Face_handle>> hull;  // infinite face (inf, b, a), keyed by b
-    for(const auto& [f, i] : boundary) {
-      const Face_handle F = made[f];
-      const Vertex_handle a = F->vertex(Flat_mesh::ccw(i)), b = F->vertex(Flat_mesh::cw(i));
-      const Face_handle h = tds.create_face(infinite, b, a);
-      h->set_neighbor(0, F);
-      F->set_neighbor(i, h);
-      hull.emplace_back(b, h);
-    }
-    // (inf, b, a) borders (inf, a, c) across the edge inf-a, and (inf, d, b) across inf-b
-    for(auto& bh : hull)
-      for(auto& other : hull)
-        if(other.second->vertex(1) == bh.second->vertex(2)) {
-          bh.second->set_neighbor(1, other.second);
-          other.second->set_neighbor(2, bh.second);
-        }
-    infinite->set_face(hull.front().second);
-    return vh;
-  }
-
 };
 
 } // namespace Penrose

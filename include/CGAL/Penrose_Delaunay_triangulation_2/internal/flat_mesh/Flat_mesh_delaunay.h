@@ -11,8 +11,8 @@
 #ifndef CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_FLAT_MESH_DELAUNAY_H
 #define CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_FLAT_MESH_DELAUNAY_H
 
-#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Fast_predicates.h>
-#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Flat_mesh.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/internal/flat_mesh/Fast_predicates.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/internal/flat_mesh/Flat_mesh.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 

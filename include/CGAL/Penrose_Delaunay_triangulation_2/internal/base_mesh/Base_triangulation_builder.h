@@ -31,11 +31,12 @@
 #ifndef CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_BASE_TRIANGULATION_BUILDER_H
 #define CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_BASE_TRIANGULATION_BUILDER_H
 
-#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Concurrency.h>
-#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Flat_mesh.h>
-#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Sampling_context.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/internal/parallel/Concurrency.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/internal/flat_mesh/Flat_mesh.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/internal/tiling/Sampling_context.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/internal/tiling/Tile_subdivision.h>
 #include <CGAL/Penrose_Delaunay_triangulation_2/internal/Size_limits.h>
-#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Split_patterns.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/internal/base_mesh/Split_patterns.h>
 
 #include <CGAL/assertions.h>
 
@@ -116,7 +117,7 @@ public:
     if(surveyed_apart) surveys_.reserve(n);
     for(int i = 0; i < 3; ++i) add_vertex(c_.root_x(i), c_.root_y(i), c_.importance(c_.root_x(i), c_.root_y(i)));
     frontier_base_ = m_.create_face(0, 1, 2);
-    const Tile root(0, 0, FAT_F, 15, {{0, 1, 2}});
+    const Tile root(root_label(), {{0, 1, 2}});
     double rx[3], ry[3];
     for(int i = 0; i < 3; ++i) { rx[i] = m_.points[i].x(); ry[i] = m_.points[i].y(); }
     if(c_.should_refine(0, 0, rx, ry, importance_.data())) frontier_.push_back(root);
@@ -172,10 +173,9 @@ private:
     // built in place, field by field: a tile assembled on the stack and
     // copied would be reloaded in wider words than it was stored in, and
     // such loads wait for the stores to retire
-    Tile(std::uint64_t code, std::uint64_t threshold, Tile_type type, std::uint8_t direction,
-         const std::array<Index, 3>& corners)
-      : code(code), threshold(threshold), type(type), direction(direction), refined_children(0), unused(0),
-        corners(corners)
+    Tile(const Tile_label& label, const std::array<Index, 3>& corners)
+      : code(label.code), threshold(label.threshold), type(label.type), direction(label.direction),
+        refined_children(0), unused(0), corners(corners)
     {}
 
     std::uint64_t code;
@@ -187,7 +187,7 @@ private:
     std::array<Index, 3> corners;
 
     Tile_type tile_type() const { return static_cast<Tile_type>(type); }
-    std::uint8_t tile_direction() const { return static_cast<std::uint8_t>(direction); }
+    Tile_label label() const { return {code, threshold, tile_type(), static_cast<std::uint8_t>(direction)}; }
   };
   // thresholds stay below the Fibonacci number of the level after the last
   static_assert(max_level <= 30, "Tile::threshold holds 52 bits");
@@ -297,14 +297,12 @@ private:
     for(int i = 0; i < 3; ++i) {
       vx[i] = d.points[t.corners[i]].x(); vy[i] = d.points[t.corners[i]].y(); vi[i] = d.importance[t.corners[i]];
     }
+    place_new_vertices(r, vx, vy);
     for(int n = 0; n < r.number_of_new_vertices; ++n) {
-      const New_vertex_rule& nv = r.new_vertices[n];
-      const int a = nv.near_corner, b = nv.far_corner;
-      vx[3 + n] = split_coordinate(vx[a], vx[b]);
-      vy[3 + n] = split_coordinate(vy[a], vy[b]);
       s.importance[n] = vi[3 + n] = context.importance(vx[3 + n], vy[3 + n]);
       Placed_sample p;
-      if(nv.is_sample && context.activate(vx[3 + n], vy[3 + n], vi[3 + n], sample_birth(t, r, child_level), p)
+      if(r.new_vertices[n].is_sample
+         && context.activate(vx[3 + n], vy[3 + n], vi[3 + n], sample_birth(t.label(), r, child_level), p)
          && context.contains(p.x, p.y)) {
         s.kept = true;
         s.target_x = p.x; s.target_y = p.y;
@@ -317,20 +315,10 @@ private:
         const int j = cr.corners[i];
         cx[i] = vx[j]; cy[i] = vy[j]; ci[i] = vi[j];
       }
-      if(context.should_refine(child_level, child_threshold(t, cr, child_level), cx, cy, ci)) s.refined_children |= 1u << c;
+      if(context.should_refine(child_level, child_threshold(t.threshold, cr, child_level), cx, cy, ci))
+        s.refined_children |= 1u << c;
     }
     return s;
-  }
-
-  static Sample_birth sample_birth(const Tile& t, const Subdivision_rule& r, int child_level)
-  {
-    return { t.code * 4 + r.sample_code_pair, t.threshold + pair_weight(r.sample_code_pair, child_level),
-             static_cast<std::uint8_t>(child_level), add_direction(t.tile_direction(), r.sample_direction_step) };
-  }
-
-  static std::uint64_t child_threshold(const Tile& t, const Child_rule& cr, int child_level)
-  {
-    return t.threshold + pair_weight(cr.code_pair, child_level);
   }
 
   // The faces that a walk over tiles gives to what is neither a tile's own
@@ -597,7 +585,7 @@ private:
       if(nv.is_sample && s.kept) {
         if(x == null) add_new_vertex(k, n, s.importance[n]);
         target_[x] = {s.target_x, s.target_y};
-        if(record_births_) birth_[x] = sample_birth(t, r, child_level);
+        if(record_births_) birth_[x] = sample_birth(t.label(), r, child_level);
       }
       v[3 + n] = x;
     }
@@ -610,8 +598,7 @@ private:
         if(v[j] == null) v[j] = add_new_vertex(k, j - 3, s.importance[j - 3]);
         corners[i] = v[j];
       }
-      next_.emplace_back(t.code * 4 + cr.code_pair, child_threshold(t, cr, child_level), cr.type,
-                         add_direction(t.tile_direction(), cr.direction_step), corners);
+      next_.emplace_back(child_label(t.label(), cr, child_level), corners);
     }
     // written once the tile is read no more: a byte stored into the word that
     // the next child's threshold loads would stall that load

@@ -7,9 +7,10 @@
 #ifndef CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_SAMPLING_CONTEXT_H
 #define CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_SAMPLING_CONTEXT_H
 
-#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Correction_table.h>
-#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Fibonacci_code.h>
-#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Penrose_rules.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/internal/tiling/Correction_table.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/internal/tiling/Fibonacci_code.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/internal/tiling/Penrose_rules.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/internal/tiling/Tile_subdivision.h>
 #include <CGAL/Penrose_Delaunay_triangulation_2/internal/Size_limits.h>
 
 #include <algorithm>
@@ -36,15 +37,6 @@
 namespace CGAL {
 namespace internal {
 namespace Penrose {
-
-// The data of the A tile born at a vertex, fixed at birth.
-struct Sample_birth
-{
-  std::uint64_t code;      // F-code of the A tile at its birth level
-  std::uint64_t threshold; // Fibonacci value of that code
-  std::uint8_t level;
-  std::uint8_t direction;
-};
 
 // A sample that passed its threshold, with the data of its leaf tile.
 struct Placed_sample

@@ -11,7 +11,7 @@
 #ifndef CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_SPLIT_PATTERNS_H
 #define CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_SPLIT_PATTERNS_H
 
-#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Penrose_rules.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/internal/tiling/Penrose_rules.h>
 
 #include <array>
 #include <cstdint>

@@ -9,7 +9,7 @@
 #ifndef CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_FLAT_MESH_H
 #define CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_FLAT_MESH_H
 
-#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Fast_predicates.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/internal/flat_mesh/Fast_predicates.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/assertions.h>
@@ -17,6 +17,7 @@
 
 #include <array>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 // Walks over a flat mesh are bound by memory: they fetch what they will
@@ -141,6 +142,16 @@ public:
   // leaves it; null past the boundary.
   Index ccw_face_around(Index f, Index v) const { return faces[f].n[ccw(index_of_vertex(f, v))]; }
   Index cw_face_around(Index f, Index v) const { return faces[f].n[cw(index_of_vertex(f, v))]; }
+
+  // The boundary edge that leaves vertex b, on the mesh's boundary, as
+  // (face, edge index): the faces around b turned clockwise until there is
+  // nothing across.
+  std::pair<Index, int> boundary_edge_from(Index b) const
+  {
+    Index f = vertex_face[b];
+    for(Index g = cw_face_around(f, b); g != null; g = cw_face_around(f, b)) f = g;
+    return {f, cw(index_of_vertex(f, b))};
+  }
 
   int index_of_neighbor(Index f, Index g) const
   {

@@ -11,8 +11,8 @@
 #ifndef CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_FLAT_MESH_EDITING_H
 #define CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_FLAT_MESH_EDITING_H
 
-#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Flat_mesh.h>
-#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Concurrency.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/internal/flat_mesh/Flat_mesh.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/internal/parallel/Concurrency.h>
 
 #include <algorithm>
 #include <array>

@@ -7,7 +7,7 @@
 #ifndef CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_TILE_EDGE_TABLES_H
 #define CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_TILE_EDGE_TABLES_H
 
-#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Penrose_rules.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/internal/tiling/Penrose_rules.h>
 
 #include <CGAL/assertions.h>
 

@@ -7,7 +7,7 @@
 #ifndef CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_CORRECTION_TABLE_H
 #define CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_CORRECTION_TABLE_H
 
-#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Fibonacci_code.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/internal/tiling/Fibonacci_code.h>
 
 #include <cmath>
 

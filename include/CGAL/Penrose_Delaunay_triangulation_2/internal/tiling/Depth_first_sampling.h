@@ -7,7 +7,8 @@
 #ifndef CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_DEPTH_FIRST_SAMPLING_H
 #define CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_DEPTH_FIRST_SAMPLING_H
 
-#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Sampling_context.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/internal/tiling/Sampling_context.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/internal/tiling/Tile_subdivision.h>
 
 #include <array>
 #include <cstdint>
@@ -28,9 +29,8 @@ void for_each_sample_depth_first(const Sampling_context& context, const Sample_w
   struct Node
   {
     double x[3], y[3], importance[3];
-    std::uint64_t code, threshold;
-    Tile_type type;
-    std::uint8_t direction, level;
+    Tile_label label;
+    std::uint8_t level;
   };
   // each subdivision pops one node and pushes at most three. A child is
   // assembled in the free slot above the top and tested there: it is pushed
@@ -45,8 +45,9 @@ void for_each_sample_depth_first(const Sampling_context& context, const Sample_w
     root.y[i] = context.root_y(i);
     root.importance[i] = context.importance(root.x[i], root.y[i]);
   }
-  root.code = 0; root.threshold = 0; root.type = FAT_F; root.direction = 15; root.level = 0;
-  if(!window.is_empty() && context.should_refine(root.level, root.threshold, root.x, root.y, root.importance, window)) ++top;
+  root.label = root_label();
+  root.level = 0;
+  if(!window.is_empty() && context.should_refine(root.level, root.label.threshold, root.x, root.y, root.importance, window)) ++top;
 
   double x[5], y[5], importance[5];
   for(std::size_t refined = 1; top > 0; ++refined) {
@@ -54,24 +55,14 @@ void for_each_sample_depth_first(const Sampling_context& context, const Sample_w
     // read in place, not copied: a copy of a node just pushed stalls on the
     // stores that wrote it. Its children overwrite it, once it is read.
     const Node& t = stack[--top];
-    const Subdivision_rule& r = rule(t.type);
+    const Tile_label label = t.label;
+    const Subdivision_rule& r = rule(label.type);
     for(int i = 0; i < 3; ++i) { x[i] = t.x[i]; y[i] = t.y[i]; importance[i] = t.importance[i]; }
-    const std::uint64_t code = t.code, threshold = t.threshold;
-    const std::uint8_t direction = t.direction;
     const int child_level = t.level + 1;
+    place_new_vertices(r, x, y);
     for(int k = 0; k < r.number_of_new_vertices; ++k) {
-      const New_vertex_rule& nv = r.new_vertices[k];
-      const int v = 3 + k;
-      x[v] = split_coordinate(x[nv.near_corner], x[nv.far_corner]);
-      y[v] = split_coordinate(y[nv.near_corner], y[nv.far_corner]);
-      importance[v] = context.importance(x[v], y[v]);
-      if(nv.is_sample) {
-        const Sample_birth b = { code * 4 + r.sample_code_pair,
-                                 threshold + pair_weight(r.sample_code_pair, child_level),
-                                 static_cast<std::uint8_t>(child_level),
-                                 add_direction(direction, r.sample_direction_step) };
-        visit(x[v], y[v], importance[v], b);
-      }
+      importance[3 + k] = context.importance(x[3 + k], y[3 + k]);
+      if(r.new_vertices[k].is_sample) visit(x[3 + k], y[3 + k], importance[3 + k], sample_birth(label, r, child_level));
     }
     for(int c = r.number_of_children - 1; c >= 0; --c) {
       const Child_rule& cr = r.children[c];
@@ -81,11 +72,10 @@ void for_each_sample_depth_first(const Sampling_context& context, const Sample_w
         n.y[i] = y[cr.corners[i]];
         n.importance[i] = importance[cr.corners[i]];
       }
-      n.threshold = threshold + pair_weight(cr.code_pair, child_level);
-      if(!context.should_refine(child_level, n.threshold, n.x, n.y, n.importance, window)) continue;
-      n.code = code * 4 + cr.code_pair;
-      n.type = cr.type;
-      n.direction = add_direction(direction, cr.direction_step);
+      if(!context.should_refine(child_level, child_threshold(label.threshold, cr, child_level), n.x, n.y,
+                                n.importance, window))
+        continue;
+      n.label = child_label(label, cr, child_level);
       n.level = static_cast<std::uint8_t>(child_level);
       ++top;
     }

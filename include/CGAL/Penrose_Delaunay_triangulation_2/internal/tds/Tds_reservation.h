@@ -14,7 +14,7 @@
 #ifndef CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_TDS_RESERVATION_H
 #define CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_TDS_RESERVATION_H
 
-#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Creation_order_handles.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/internal/tds/Creation_order_handles.h>
 
 #include <cstddef>
 #include <type_traits>

@@ -15,9 +15,10 @@
 #ifndef CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_TILE_TREE_H
 #define CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_TILE_TREE_H
 
-#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Sampling_context.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/internal/tiling/Sampling_context.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/internal/tiling/Tile_subdivision.h>
 #include <CGAL/Penrose_Delaunay_triangulation_2/internal/Size_limits.h>
-#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Tile_edge_tables.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/internal/tiling/Tile_edge_tables.h>
 
 #include <CGAL/assertions.h>
 
@@ -146,8 +147,9 @@ private:
   {
     for(int i = 0; i < 3; ++i)
       add_vertex(context_.root_x(i), context_.root_y(i));
-    tiles_.push_back(Tile{0, {{0, 1, 2}}, {{null_index, null_index, null_index}}, null_index,
-                          FAT_F, 15, 0, 0});
+    const Tile_label root = root_label();
+    tiles_.push_back(Tile{root.code, {{0, 1, 2}}, {{null_index, null_index, null_index}}, null_index,
+                          root.type, root.direction, 0, 0});
     level_begin_ = {0, 1};
     std::size_t refined = 0;
     for(int level = 0; level_begin_[level] < level_begin_[level + 1]; ++level) {
@@ -207,6 +209,7 @@ private:
   void subdivide(Index t)
   {
     const Tile tt = tiles_[t];
+    const Tile_label label = label_of(t);
     const Subdivision_rule& r = rule(tt.type);
     const int child_level = tt.level + 1;
     std::array<Index, 5> v = {{tt.vertices[0], tt.vertices[1], tt.vertices[2], null_index, null_index}};
@@ -224,19 +227,15 @@ private:
       if(nv.is_sample) {
         Vertex& s = vertices_[v[3 + k]];
         s.is_sample = true;
-        s.birth = Sample_birth{ tt.f_code * 4 + r.sample_code_pair,
-                                tile_threshold(t) + pair_weight(r.sample_code_pair, child_level),
-                                static_cast<std::uint8_t>(child_level),
-                                add_direction(tt.direction, r.sample_direction_step) };
+        s.birth = sample_birth(label, r, child_level);
       }
     }
     const Index first = Index(tiles_.size());
     for(int c = 0; c < r.number_of_children; ++c) {
       const Child_rule& cr = r.children[c];
-      tiles_.push_back(Tile{ tt.f_code * 4 + cr.code_pair,
-                             {{v[cr.corners[0]], v[cr.corners[1]], v[cr.corners[2]]}},
-                             {{null_index, null_index, null_index}}, null_index,
-                             cr.type, add_direction(tt.direction, cr.direction_step),
+      const Tile_label child = child_label(label, cr, child_level);
+      tiles_.push_back(Tile{ child.code, {{v[cr.corners[0]], v[cr.corners[1]], v[cr.corners[2]]}},
+                             {{null_index, null_index, null_index}}, null_index, child.type, child.direction,
                              static_cast<std::uint8_t>(child_level), 0 });
     }
     tiles_[t].first_child = first;
@@ -268,6 +267,11 @@ private:
   std::uint64_t tile_threshold(Index t) const
   {
     return fibonacci_value(tiles_[t].f_code, 2 * tiles_[t].level);
+  }
+
+  Tile_label label_of(Index t) const
+  {
+    return {tiles_[t].f_code, tile_threshold(t), tiles_[t].type, tiles_[t].direction};
   }
 
   Sampling_context context_;

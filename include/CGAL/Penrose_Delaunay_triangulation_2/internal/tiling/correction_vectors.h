@@ -9,7 +9,7 @@
 #ifndef CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_CORRECTION_VECTORS_H
 #define CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_CORRECTION_VECTORS_H
 
-#include <CGAL/Penrose_Delaunay_triangulation_2/internal/Correction_table.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/internal/tiling/Correction_table.h>
 
 namespace CGAL {
 namespace internal {
