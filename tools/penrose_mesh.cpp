@@ -125,9 +125,11 @@ Input read_terrain(const Options& o)
   h.width = hf.width;
   h.height = hf.height;
   h.values = std::move(hf.values);
-  for(double& v : h.values) v *= o.height_scale;
   const std::string scaled = "--height-scale " + text(o.height_scale) + ": ";
-  if(!all_finite(h.values)) usage_error(scaled + "the heights of " + in.file + " times it overflow");
+  if(o.height_scale != 1.) {  // the reader's heights are finite
+    for(double& v : h.values) v *= o.height_scale;
+    if(!all_finite(h.values)) usage_error(scaled + "the heights of " + in.file + " times it overflow");
+  }
   h.x0 = hf.x0; h.y0 = hf.y0; h.x1 = hf.x1; h.y1 = hf.y1;
   const double spacing = o.points > 0. ? std::sqrt(double(h.width * h.height) / o.points) : 4.;
   const std::size_t block = std::size_t(std::min(16., std::max(1., std::floor(0.5 * spacing))));

@@ -53,13 +53,14 @@ struct Raster
 
 // One pass of a box filter of the given radius over n lines of `length`
 // values, value k of line l at v[l * line_step + k * step], with the border
-// value repeated. The running sum runs over whole lines at once when the lines
-// are the rows (step = width), so that columns are filtered in memory order.
-inline void box_pass(double* v, std::size_t length, std::size_t step, std::size_t lines,
-                     std::size_t line_step, int radius)
+// value repeated; `in` and `sum` are scratch space. The running sum runs over
+// whole lines at once when the lines are the rows (step = width), so that
+// columns are filtered in memory order.
+inline void box_pass(double* v, std::size_t length, std::size_t step, std::size_t lines, std::size_t line_step,
+                     int radius, std::vector<double>& in, std::vector<double>& sum)
 {
-  const std::vector<double> in(v, v + (length - 1) * step + (lines - 1) * line_step + 1);
-  std::vector<double> sum(lines, 0.);
+  in.assign(v, v + (length - 1) * step + (lines - 1) * line_step + 1);
+  sum.assign(lines, 0.);
   auto add = [&](long k, double sign) {
     const std::size_t c = clamp_index(k, length) * step;
     for(std::size_t l = 0; l < lines; ++l) sum[l] += sign * in[c + l * line_step];
@@ -74,13 +75,17 @@ inline void box_pass(double* v, std::size_t length, std::size_t step, std::size_
 }
 
 // Two passes of a box filter of the given radius, across then down: close to
-// a Gaussian of standard deviation 1.15 r.
+// a Gaussian of standard deviation 1.15 r. The scratch space is allocated once:
+// fresh pages for each pass cost as much as the filtering.
 inline void smooth(std::vector<double>& v, std::size_t w, std::size_t h, int radius)
 {
   if(radius < 1) return;
+  std::vector<double> in, sum;
+  in.reserve(v.size());
+  sum.reserve(std::max(w, h));
   for(int pass = 0; pass < 2; ++pass) {
-    for(std::size_t j = 0; j < h; ++j) box_pass(v.data() + j * w, w, 1, 1, 0, radius);  // in cache
-    box_pass(v.data(), h, w, w, 1, radius);
+    for(std::size_t j = 0; j < h; ++j) box_pass(v.data() + j * w, w, 1, 1, 0, radius, in, sum);  // in cache
+    box_pass(v.data(), h, w, w, 1, radius, in, sum);
   }
 }
 
@@ -129,23 +134,6 @@ inline void apply_gamma(std::vector<double>& v, double gamma)
     for(double& x : v) x = std::pow(std::max(x, 0.), gamma);
 }
 
-// The means of the blocks of b x b pixels (fewer at the right and bottom
-// borders); w and h become the dimensions of the result.
-inline std::vector<double> block_means(const std::vector<double>& v, std::size_t& w, std::size_t& h, std::size_t b)
-{
-  const std::size_t bw = (w + b - 1) / b, bh = (h + b - 1) / b;
-  std::vector<double> sum(bw * bh, 0.), count(bw * bh, 0.);
-  for(std::size_t j = 0; j < h; ++j)
-    for(std::size_t i = 0; i < w; ++i) {
-      sum[(j / b) * bw + i / b] += v[j * w + i];
-      count[(j / b) * bw + i / b] += 1.;
-    }
-  for(std::size_t k = 0; k < sum.size(); ++k) sum[k] /= count[k];
-  w = bw;
-  h = bh;
-  return sum;
-}
-
 /*
 The density for meshing a height field: the largest absolute eigenvalue of
 its Hessian, |hxx + hyy| / 2 + sqrt(((hxx - hyy) / 2)^2 + hxy^2), averaged
@@ -158,22 +146,39 @@ RMS error, is smallest for rho proportional to kappa^(2/3). A floor of a tenth
 of the mean keeps flat regions meshed.
 `dx`, `dy`: the size of a pixel in the plane; `heights` already scaled; `w`
 and `h` become the dimensions of the result.
+The curvature is computed a row at a time and added to its blocks at once:
+the full-resolution map, as large as the heights, is never stored.
 */
 inline std::vector<double> curvature_density(const std::vector<double>& heights, std::size_t& w, std::size_t& h,
                                              double dx, double dy, std::size_t block)
 {
-  std::vector<double> k(heights.size(), 0.);
-  auto at = [&](long i, long j) { return clamped_at(heights, w, h, i, j); };
-  for(long j = 0; j < long(h); ++j)
-    for(long i = 0; i < long(w); ++i) {
-      const double c = at(i, j);
-      const double hxx = (at(i + 1, j) - 2 * c + at(i - 1, j)) / (dx * dx);
-      const double hyy = (at(i, j + 1) - 2 * c + at(i, j - 1)) / (dy * dy);
-      const double hxy = (at(i + 1, j + 1) - at(i + 1, j - 1) - at(i - 1, j + 1) + at(i - 1, j - 1)) / (4 * dx * dy);
+  const std::size_t bw = (w + block - 1) / block, bh = (h + block - 1) / block;
+  std::vector<double> k(bw * bh, 0.), row(w);
+  for(std::size_t j = 0; j < h; ++j) {
+    // rows j - 1, j and j + 1, and columns i - 1 and i + 1, the border repeated
+    const double* n = &heights[clamp_index(long(j) - 1, h) * w];
+    const double* c = &heights[j * w];
+    const double* s = &heights[clamp_index(long(j) + 1, h) * w];
+    auto curvature = [&](std::size_t l, std::size_t i, std::size_t r) {
+      const double hxx = (c[r] - 2 * c[i] + c[l]) / (dx * dx);
+      const double hyy = (s[i] - 2 * c[i] + n[i]) / (dy * dy);
+      const double hxy = (s[r] - n[r] - s[l] + n[l]) / (4 * dx * dy);
       const double d = 0.5 * (hxx - hyy);
-      k[std::size_t(j) * w + std::size_t(i)] = 0.5 * std::abs(hxx + hyy) + std::sqrt(d * d + hxy * hxy);
-    }
-  if(block > 1) k = block_means(k, w, h, block);
+      return 0.5 * std::abs(hxx + hyy) + std::sqrt(d * d + hxy * hxy);
+    };
+    row[0] = curvature(0, 0, std::min<std::size_t>(1, w - 1));
+    for(std::size_t i = 1; i + 1 < w; ++i) row[i] = curvature(i - 1, i, i + 1);
+    if(w > 1) row[w - 1] = curvature(w - 2, w - 1, w - 1);
+    double* sum = &k[(j / block) * bw];
+    for(std::size_t b = 0, i = 0; b < bw; ++b)
+      for(const std::size_t end = std::min(w, i + block); i < end; ++i) sum[b] += row[i];
+  }
+  if(block > 1)  // the means, of fewer pixels at the right and bottom borders
+    for(std::size_t bj = 0; bj < bh; ++bj)
+      for(std::size_t bi = 0; bi < bw; ++bi)
+        k[bj * bw + bi] /= double((std::min(w, (bi + 1) * block) - bi * block) * (std::min(h, (bj + 1) * block) - bj * block));
+  w = bw;
+  h = bh;
   smooth(k, w, h, 1);
   for(double& x : k) x = std::cbrt(x * x);
   const double floor = 0.1 * mean(k);

@@ -163,6 +163,15 @@ TEST(HeightField, AsciiGridRowsByLine)
   EXPECT_EQ(IO::read_height_field(temp("crlf.asc")).values, (std::vector<double>{1, 2, 3, 4}));
 }
 
+// The numbers strtod() reads and std::from_chars() alone does not: a plus
+// sign, and a value too small for a double (zero, as strtod() makes it).
+TEST(HeightField, AsciiGridNumbersAsStrtodReadsThem)
+{
+  write_file(temp("numbers.asc"), "ncols 3\nnrows 2\nxllcorner 0\nyllcorner 0\ncellsize 1\n"
+                                   "+1.5 -2e3 .25\n1e-400 +0 7.\n");
+  EXPECT_EQ(IO::read_height_field(temp("numbers.asc")).values, (std::vector<double>{1.5, -2000, 0.25, 0, 0, 7}));
+}
+
 TEST(HeightField, BadFiles)
 {
   auto read = [](const std::string& f) { IO::read_height_field(f); };
@@ -202,6 +211,9 @@ TEST(HeightField, BadFiles)
     {"row.asc", std::string(header) + "cellsize 1\n1 2 3\n4 5\n", "line 7: 2 values where ncols is 3"},
     {"rows.asc", std::string(header) + "cellsize 1\n1 2 3\n4 5 6\n\n7 8 9\n", "line 9: more rows than nrows (2)"},
     {"word.asc", std::string(header) + "cellsize 1\n1 2 x\n4 5 6\n", "line 6: value 3 is not a number"},
+    {"sign.asc", std::string(header) + "cellsize 1\n1 2 3\n4 5 +-6\n", "line 7: value 3 is not a number"},
+    {"huge_value.asc", std::string(header) + "cellsize 1\n1 2 1e400\n4 5 6\n", "line 6: value 3 is not finite"},
+    {"nan.asc", std::string(header) + "cellsize 1\n1 2 3\nnan 5 6\n", "line 7: value 1 is not finite"},
     {"extent.asc", std::string(header) + "cellsize 1e308\n1 2 3\n4 5 6\n", "extent"},
     {"cell.asc", std::string(header) + "cellsize -1\n1 2 3 4 5 6\n", "cellsize must be positive"},
     {"corner.asc", "ncols 3\nnrows 2\ncellsize 1\n1 2 3 4 5 6\n", "xllcorner"},

@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
+#include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -30,6 +31,7 @@
 #include <new>
 #include <stdexcept>
 #include <string>
+#include <system_error>
 #include <vector>
 
 namespace CGAL {
@@ -74,7 +76,9 @@ struct Height_field
 namespace internal {
 
 // The whole file, or an exception that tells why not (missing, a directory,
-// unreadable, empty). Read in blocks, so that a pipe works too.
+// unreadable, empty). A regular file is read at once into a buffer of its
+// size (a 4096^2 grid's text, 100 MB, grown block by block was copied about
+// twice over); what is left, or a pipe, in blocks.
 inline std::string read_whole_file(const std::string& file)
 {
   std::error_code error;
@@ -84,6 +88,12 @@ inline std::string read_whole_file(const std::string& file)
   std::string s;
   char block[1 << 16];
   try {
+    const std::uintmax_t size = std::filesystem::is_regular_file(file, error) ? std::filesystem::file_size(file, error) : 0;
+    if(!error && size > 0 && size < s.max_size()) {
+      s.resize(std::size_t(size));
+      in.read(&s[0], std::streamsize(size));
+      s.resize(std::size_t(in.gcount()));
+    }
     while(in.read(block, sizeof block) || in.gcount() > 0) s.append(block, std::size_t(in.gcount()));
   } catch(const std::bad_alloc&) {
     throw file_error(file, "too large to hold in memory");
@@ -142,6 +152,23 @@ inline Pnm read_pnm(const std::string& file, const std::string& bytes, std::size
 
 namespace internal {
 
+// A blank within a line: what std::isspace() accepts, the end of line aside.
+inline bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
+
+// Reads the decimal number at `p`, before `end`, into `v`, as std::strtod()
+// does (a plus sign, "inf", "nan" included), and returns where it ends, or
+// `p` if there is none. std::from_chars() reads a grid's values several times
+// faster; strtod() only gives the value that overflows or underflows a double.
+// (Hexadecimal numbers, which strtod() reads too, have no place in a grid.)
+inline const char* read_number(const char* p, const char* end, double& v)
+{
+  const char* digits = p + (p != end && *p == '+' && p + 1 != end && p[1] != '-');
+  const std::from_chars_result r = std::from_chars(digits, end, v);
+  if(r.ec == std::errc::result_out_of_range) v = std::strtod(p, nullptr);
+  else if(r.ec != std::errc()) return p;
+  return r.ptr;
+}
+
 // The heights of an ESRI grid, from `at` on: one row of `ncols` numbers a
 // line, blank lines aside, `nrows` rows.
 inline void read_grid_rows(const std::string& file, const std::string& text, std::size_t at, Height_field& hf)
@@ -149,16 +176,17 @@ inline void read_grid_rows(const std::string& file, const std::string& text, std
   std::size_t line = 1 + std::size_t(std::count(text.begin(), text.begin() + std::ptrdiff_t(at), '\n'));
   auto fail = [&](const std::string& why) { return file_error(file, "line " + std::to_string(line) + ": " + why); };
   std::size_t row = 0;
-  for(; at < text.size(); ++line) {
-    const std::size_t end = (std::min)(text.find('\n', at), text.size());
-    const std::string l = text.substr(at, end - at);
-    at = end + 1;
+  const char* p = text.data() + at;
+  const char* const text_end = text.data() + text.size();
+  for(; p != text_end; ++line) {
+    const void* newline = std::memchr(p, '\n', std::size_t(text_end - p));
+    const char* const end = newline ? static_cast<const char*>(newline) : text_end;
     std::size_t count = 0;
-    for(const char* p = l.c_str();;) {
-      while(std::isspace((unsigned char)*p)) ++p;
-      if(p == l.c_str() + l.size()) break;
-      char* next = nullptr;
-      const double v = std::strtod(p, &next);
+    for(;;) {
+      while(p != end && is_blank(*p)) ++p;
+      if(p == end) break;
+      double v = 0.;
+      const char* next = read_number(p, end, v);
       if(next == p) throw fail("value " + std::to_string(count + 1) + " is not a number");
       if(!std::isfinite(v)) throw fail("value " + std::to_string(count + 1) + " is not finite");
       if(row == hf.height) throw fail("more rows than nrows (" + std::to_string(hf.height) + ")");
@@ -169,6 +197,7 @@ inline void read_grid_rows(const std::string& file, const std::string& text, std
     if(count > 0 && count < hf.width)
       throw fail(std::to_string(count) + " values where ncols is " + std::to_string(hf.width));
     row += count > 0;
+    p = end == text_end ? end : end + 1;
   }
   if(row < hf.height)
     throw file_error(file, "truncated: " + std::to_string(row) + " of " + std::to_string(hf.height) + " rows");
