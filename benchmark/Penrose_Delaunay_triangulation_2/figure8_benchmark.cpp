@@ -15,6 +15,7 @@
 //           hierarchy_range      Triangulation_hierarchy_2::insert(range)
 //           cgal_range           Delaunay_triangulation_2::insert(range): spatial sort + insert (the reference)
 //           penrose              Penrose_Delaunay_triangulation_2 from the sampler: sampling and triangulation
+//           penrose_parallel     the same with Parallel_tag, on the threads that TBB allows (built with TBB only)
 //           sampling             Penrose_importance_sampler alone (streaming)
 
 #include <CGAL/Penrose_Delaunay_triangulation_2.h>
@@ -70,6 +71,12 @@ std::size_t run(const std::string& method, const Sampler& sampler, const std::ve
     CGAL::Penrose_Delaunay_triangulation_2<K> pdt(sampler);
     return pdt.number_of_vertices();
   }
+#if defined(CGAL_LINKED_WITH_TBB)
+  if(method == "penrose_parallel") {
+    CGAL::Penrose_Delaunay_triangulation_2<K, CGAL::Default, CGAL::Parallel_tag> pdt(sampler);
+    return pdt.number_of_vertices();
+  }
+#endif
   if(method == "sampling") {
     std::vector<Point> p;
     p.reserve(points.size());

@@ -2,26 +2,33 @@
 # Reproduces the paper's Figure 8 against today's CGAL, and the sample-quality
 # report, from a fresh clone:
 #
-#   benchmark/Penrose_Delaunay_triangulation_2/run_benchmarks.sh [--quick] [--out DIR]
+#   benchmark/Penrose_Delaunay_triangulation_2/run_benchmarks.sh [--quick] [--out DIR] [--scaling]
 #
-# --quick: sizes up to 10^5 (under a minute); default: 10^3 to 4 x 10^6.
-# --out:   where results.csv, the plots and the quality report go (default benchmark-results).
+# --quick:   sizes up to 10^5 (under a minute); default: 10^3 to 4 x 10^6.
+# --out:     where results.csv, the plots and the quality report go (default benchmark-results).
+# --scaling: measure the speed-up of Parallel_tag against the number of
+#            threads (scaling.csv, scaling.png) even on 2 cores; it is
+#            measured anyway on a machine with more than 2. Its sizes are
+#            SCALING_SIZES (default "1000000 10000000"; 10^8 needs about
+#            25 GB).
 # The last full run's results.csv, ratios.md and quality summaries are kept in
 # benchmark/Penrose_Delaunay_triangulation_2/results/, under the same names.
 # Installs what is missing (Debian packages), builds in Release, checks the
 # triangulation against CGAL's on each input at 10^6 points (10^5 with
-# --quick; check.txt), runs every (input, size, method) in its own process,
-# and draws the plots with gnuplot.
+# --quick; check.txt) with both concurrency tags, runs every (input, size,
+# method) in its own process, and draws the plots with gnuplot.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 
 quick=0
+scaling=0
 out=benchmark-results
 while [ $# -gt 0 ]; do
   case "$1" in
     --quick) quick=1 ;;
     --out) out="$2"; shift ;;
-    *) echo "usage: $0 [--quick] [--out DIR]" >&2; exit 2 ;;
+    --scaling) scaling=1 ;;
+    *) echo "usage: $0 [--quick] [--out DIR] [--scaling]" >&2; exit 2 ;;
   esac
   shift
 done
@@ -37,13 +44,14 @@ bin="$build/benchmark/Penrose_Delaunay_triangulation_2"
 
 if [ $quick = 1 ]; then sizes="1000 3000 10000 30000 100000"; else sizes="1000 3000 10000 30000 100000 300000 1000000 2000000 4000000"; fi
 inputs="constant ramp image terrain"
-methods="cgal_range incremental hierarchy hierarchy_range penrose sampling"
+methods="cgal_range incremental hierarchy hierarchy_range penrose penrose_parallel sampling"
 target=$([ $quick = 1 ] && echo 100000 || echo 1000000)
 
 # the timings below are of correct triangulations: equal, edge for edge, to CGAL's
 : > "$out/check.txt"
 for input in $inputs; do
   "$bin/triangulation_benchmark" check "$target" "$input" data/test_image.png | tee -a "$out/check.txt"
+  "$bin/triangulation_benchmark" --threads "$(nproc)" check "$target" "$input" data/test_image.png | tee -a "$out/check.txt"
 done
 
 raw="$out/raw.csv"
@@ -92,7 +100,7 @@ awk -F, 'BEGIN { OFS = "," }
 } > "$out/ratios.md"
 
 # plots: time against N (log-log, like Figure 8) and ns per point against N
-labels="cgal_range:CGAL range insertion|incremental:CGAL insert one by one, no hint|hierarchy:Devillers hierarchy, one by one|hierarchy_range:Devillers hierarchy, range|penrose:Penrose DT (sampling + triangulation)|sampling:Penrose sampling alone"
+labels="cgal_range:CGAL range insertion|incremental:CGAL insert one by one, no hint|hierarchy:Devillers hierarchy, one by one|hierarchy_range:Devillers hierarchy, range|penrose:Penrose DT (sampling + triangulation)|penrose_parallel:Penrose DT, Parallel_tag on $(nproc) threads|sampling:Penrose sampling alone"
 for input in $inputs; do
   for m in $methods; do
     awk -F, -v i="$input" -v m="$m" 'NR > 1 && $1 == i && $3 == m { print $2, $4, $5 }' "$csv" > "$out/.$input.$m.dat"
@@ -154,4 +162,40 @@ plot '$out/quality_corrected_angles.csv' every ::1 using 1:2 with boxes title 'w
      '$out/quality_raw_angles.csv' every ::1 using 1:2 with boxes title 'raw tile vertices'
 EOF
 
-echo "results: $out/check.txt, $csv, $out/ratios.md, $out/*.png, $out/quality_*_summary.txt"
+# speed-up of Parallel_tag against threads, ramp density: each run a fresh
+# process, the median of three against Sequential_tag's
+if [ $scaling = 1 ] || [ "$(nproc)" -gt 2 ]; then
+  scaling=1
+  once() {  # ns per point of one construction of n points: once [--threads T]
+    for r in 1 2 3; do "$bin/triangulation_benchmark" "$@" once "$n" ramp penrose | awk '{print $(NF-4)}'; done |
+      sort -g | sed -n 2p
+  }
+  echo "N,threads,ns_per_point,speed_up" > "$out/scaling.csv"
+  for n in ${SCALING_SIZES:-1000000 10000000}; do
+    sequential=$(once)
+    for t in 1 2 4 8 16 32 64; do
+      [ "$t" -le "$(nproc)" ] || break
+      ns=$(once --threads "$t")
+      echo "$n,$t,$ns,$(awk -v s="$sequential" -v p="$ns" 'BEGIN{printf "%.3f", s / p}')" | tee -a "$out/scaling.csv"
+    done
+  done
+  plot=""
+  for n in ${SCALING_SIZES:-1000000 10000000}; do
+    awk -F, -v n="$n" '$1 == n { print $2, $4 }' "$out/scaling.csv" > "$out/.scaling.$n.dat"
+    plot="$plot${plot:+, }'$out/.scaling.$n.dat' using 1:2 with linespoints title '$n points'"
+  done
+  gnuplot <<EOF
+set terminal pngcairo size 900,600 noenhanced
+set output '$out/scaling.png'
+set title 'Parallel_tag: speed-up against Sequential_tag, ramp density, $(nproc) cores'
+set logscale x 2
+set xlabel 'threads (tbb::global_control)'
+set ylabel 'speed-up'
+set key top left
+set grid
+plot $plot, x with lines dashtype 2 title 'linear'
+EOF
+  rm -f "$out"/.scaling.*.dat
+fi
+
+echo "results: $out/check.txt, $csv, $out/ratios.md, $out/*.png, $out/quality_*_summary.txt$([ $scaling = 1 ] && echo ", $out/scaling.csv, $out/scaling.png")"
