@@ -6,6 +6,7 @@
 
 #include "density_table.h"
 #include "../tools/border_points.h"
+#include "../tools/border_refinement.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Penrose_Delaunay_triangulation_2.h>
@@ -124,7 +125,8 @@ struct Mesh
 };
 
 // The vertices are numbered in the order the construction reports them, then
-// the border points; the finite faces in the triangulation's order.
+// the border points and the points that shape the triangles at the border;
+// the finite faces in the triangulation's order.
 Mesh triangulate_samples(const Request& r, const Density& d, bool boundary, bool neighbors)
 {
   const std::unique_ptr<Sampler> sampler = make_sampler(r, d);
@@ -136,18 +138,26 @@ Mesh triangulate_samples(const Request& r, const Density& d, bool boundary, bool
     m.xy.push_back(p.x());
     m.xy.push_back(p.y());
   };
-  t.build(*sampler, [](double x, double y) { return Point(x, y); },
-          [&number](Triangulation::Vertex_handle v, const Sampler::Sample& s) { number(v, s.point); });
+  auto lift = [](double x, double y) { return Point(x, y); };
+  std::vector<Triangulation::Vertex_handle> samples;
+  t.build(*sampler, lift, [&samples](Triangulation::Vertex_handle v, const Sampler::Sample&) { samples.push_back(v); });
+  const double scale = sampler->density_scale();
+  std::optional<penrose_tools::Border> border;
   if(boundary) {
-    const double scale = sampler->density_scale();
+    border.emplace(r.region, [&](double x, double y) { return scale * d.at_border(x, y); });
+    penrose_tools::remove_samples_near_border(t, samples, *border);
+  }
+  for(const auto v : samples) number(v, v->point());
+  if(boundary) {
     Triangulation::Face_handle hint;
-    penrose_tools::for_each_border_point(r.region, [&](double x, double y) { return scale * d.at_border(x, y); },
-                                         [&](double x, double y) {
+    border->for_each_point([&](double x, double y) {
       const std::size_t before = t.number_of_vertices();
       const Triangulation::Vertex_handle v = t.insert(Point(x, y), hint);
       if(t.number_of_vertices() > before) number(v, v->point());
       hint = v->face();
     });
+    penrose_tools::refine_border_triangles(t, r.region, {true, true, true, true}, lift,
+                                           [&number](Triangulation::Vertex_handle v) { number(v, v->point()); });
   }
   for(auto f : t.all_face_handles()) f->info() = -1;
   std::int32_t faces = 0;
@@ -260,7 +270,7 @@ auto with_density(const py::object& object, std::optional<std::array<double, 4>>
     auto table = std::make_shared<Density_table>([&guess](double x, double y) { return guess(x, y); });
     guess = grid_guess(*table, f, r);
     // The border is walked point after point, each step set by the density
-    // at the last point: a few thousand calls at most, made one at a time.
+    // at the last point: a few thousand calls, made one at a time.
     auto on_border = [&f](double x, double y) {
       py::gil_scoped_acquire acquire;
       const py::array_t<double, py::array::forcecast> v =
@@ -432,7 +442,11 @@ the vertices of each triangle, counter-clockwise.
 
 boundary: also add points along the border of the region, spaced at the
    local density, so that the triangles cover the whole rectangle; they
-   come after the samples in `points`.
+   come after the samples in `points`, and the samples closer to the border
+   than half the local spacing are left out. Then, so that no triangle with
+   a vertex on the border has an angle under 15 degrees, the circumcentres
+   of those that have one (or midpoints of the border's edges) are added,
+   last (Ruppert's refinement, restricted to the border).
 neighbors: also return, as scipy.spatial.Delaunay does, the triangle
    opposite each vertex of each triangle, -1 on the convex hull.
 The other arguments are those of `sample()`.)doc");

@@ -23,6 +23,7 @@
 #include <stb/stb_image_write.h>
 
 #include "border_points.h"
+#include "border_refinement.h"
 #include "mesh_options.h"
 #include "mesh_raster.h"
 #include "progress_bar.h"
@@ -231,22 +232,29 @@ void triangulate(Mesh& m, const Sampler& sampler, const Lift& lift, penrose_tool
   }, CGAL::parameters::callback(progress));
 }
 
-// The points along the border (see for_each_border_point()), inserted with insert().
+// Removes the samples too close to the border, then inserts the points
+// along it (see border_points.h) with insert().
 template <class Lift>
 std::size_t add_boundary(Mesh& m, const Options& o, const Density& d, double scale, const Lift& lift)
 {
+  const penrose_tools::Border border({o.region[0], o.region[1], o.region[2], o.region[3]},
+                                     [&](double x, double y) { return scale * d.value(Point(x, y)); });
+  penrose_tools::remove_samples_near_border(m.t, m.vertex, border);
+  m.points.clear();
+  for(const Vertex_handle v : m.vertex) {
+    v->info() = m.points.size();
+    m.points.emplace_back(v->point().x(), v->point().y());
+  }
   const std::size_t before = m.points.size();
   Triangulation::Face_handle hint;
-  penrose_tools::for_each_border_point({o.region[0], o.region[1], o.region[2], o.region[3]},
-    [&](double x, double y) { return scale * d.value(Point(x, y)); },
-    [&](double x, double y) {
-      const std::size_t n = m.t.number_of_vertices();
-      const Vertex_handle v = m.t.insert(lift(x, y), hint);
-      if(m.t.number_of_vertices() > n) v->info() = m.points.size();
-      m.points.emplace_back(x, y);
-      m.vertex.push_back(v);
-      hint = v->face();
-    });
+  border.for_each_point([&](double x, double y) {
+    const std::size_t n = m.t.number_of_vertices();
+    const Vertex_handle v = m.t.insert(lift(x, y), hint);
+    if(m.t.number_of_vertices() > n) v->info() = m.points.size();
+    m.points.emplace_back(x, y);
+    m.vertex.push_back(v);
+    hint = v->face();
+  });
   return m.points.size() - before;
 }
 
@@ -265,6 +273,75 @@ CGAL::Terrain_refinement_result refine(Mesh& m, const Options& o, const Raster<d
                                                   CGAL::Bbox_2(heights.x0, heights.y0, heights.x1, heights.y1),
                                                   max_error(o.max_error, number_of_points(budget, visitor(add))));
 }
+
+// Removes the vertices m.vertex[first..] that greedy insertion added last,
+// the least needed, until the mesh has `budget` vertices. Those next to the
+// border stay, so that its triangles stay as they are.
+void trim(Mesh& m, const Options& o, std::size_t first, std::size_t budget)
+{
+  const std::array<double, 4> region{o.region[0], o.region[1], o.region[2], o.region[3]};
+  std::vector<char> removed(m.vertex.size(), 0);
+  for(std::size_t k = m.vertex.size(); k-- > first && m.t.number_of_vertices() > budget;) {
+    const Vertex_handle v = m.vertex[k];
+    if(penrose_tools::is_on_border(region, v->point().x(), v->point().y())) continue;
+    bool near = false;
+    auto w = m.t.incident_vertices(v), done = w;
+    do near = near || m.t.is_infinite(w) || penrose_tools::is_on_border(region, w->point().x(), w->point().y());
+    while(++w != done);
+    if(near) continue;
+    m.t.remove(v);
+    removed[k] = 1;
+  }
+  std::size_t kept = first;
+  for(std::size_t k = first; k < m.vertex.size(); ++k)
+    if(!removed[k]) {
+      m.vertex[kept] = m.vertex[k];
+      m.points[kept] = m.points[k];
+      m.vertex[kept]->info() = kept;
+      ++kept;
+    }
+  m.vertex.resize(kept);
+  m.points.resize(kept);
+}
+
+// Refines the triangles at the border until none has an angle under 15
+// degrees (see border_refinement.h), in turn with greedy insertion, if
+// `greedy`, until neither inserts: a triangle mended at the border may
+// cover cells above --max-error, and greedy insertion make a sliver there.
+// At the --points budget, the vertices that greedy insertion added last
+// make room for those of the border. Returns the number of vertices that the
+// border's refinement inserted; `refined` counts greedy insertion's.
+template <class Lift>
+std::size_t refine_border(Mesh& m, const Options& o, const Raster<double>& heights, bool greedy, std::size_t budget,
+                          std::size_t first_inserted, CGAL::Terrain_refinement_result& refined, const Lift& lift)
+{
+  auto add = [&m](Vertex_handle v) {
+    v->info() = m.points.size();
+    m.points.emplace_back(v->point().x(), v->point().y());
+    m.vertex.push_back(v);
+  };
+  std::size_t mended = 0, trims = 0;
+  for(;;) {
+    const std::size_t more = penrose_tools::refine_border_triangles(m.t, {o.region[0], o.region[1], o.region[2], o.region[3]},
+                                                                    {true, true, true, true}, lift, add);
+    mended += more;
+    if(!greedy || !more) break;
+    if(m.t.number_of_vertices() > budget) {
+      const std::size_t before = m.t.number_of_vertices();
+      const bool last = ++trims == 3;
+      trim(m, o, first_inserted, last ? budget : budget - (std::min)(budget, more));
+      refined.number_of_inserted_points -= before - m.t.number_of_vertices();
+      if(last) break;
+    }
+    const CGAL::Terrain_refinement_result again = refine(m, o, heights, budget);
+    if(!again.number_of_inserted_points) break;
+    refined.number_of_inserted_points += again.number_of_inserted_points;
+    refined.max_error = again.max_error;
+    refined.max_error_reached = again.max_error_reached;
+  }
+  return mended;
+}
+
 
 // The mesh's finite faces, over the points' x and y, for the rasters.
 penrose_tools::Plane_mesh plane_mesh(const Mesh& m)
@@ -459,7 +536,7 @@ std::string json_string(const std::string& s)
 }
 
 void write_stats(const Options& o, const Input& in, const Sampler& sampler, const Mesh& m, std::size_t sampled,
-                 std::size_t boundary, const CGAL::Terrain_refinement_result& refined, const Quality* q,
+                 std::size_t boundary, std::size_t mended, const CGAL::Terrain_refinement_result& refined, const Quality* q,
                  const Timings& t)
 {
   std::string j = "{", separator;
@@ -471,6 +548,7 @@ void write_stats(const Options& o, const Input& in, const Sampler& sampler, cons
   field("points", count(sampled));
   field("expected_points", json_number(sampler.expected_number_of_points()));
   field("boundary_points", count(boundary));
+  field("border_refinement_points", count(mended));
   field("inserted_points", count(refined.number_of_inserted_points));
   if(o.max_error > 0.) field("max_error_reached", refined.max_error_reached ? "true" : "false");
   field("vertices", count(m.t.number_of_vertices()));
@@ -570,14 +648,16 @@ void run(Options o)
   t0 = std::chrono::steady_clock::now();
   Mesh m;
   in_context(o, [&] { triangulate(m, *sampler, lift, bar); });
-  const std::size_t sampled = m.points.size();
   const std::size_t boundary = o.boundary ? add_boundary(m, o, d, sampler->density_scale(), lift) : 0;
+  const std::size_t sampled = m.points.size() - boundary;  // those kept
   time.triangulate = seconds_since(t0);
 
   bar.stage("refining", 0.6, 0.7);
   t0 = std::chrono::steady_clock::now();
   CGAL::Terrain_refinement_result refined;
+  const std::size_t first_inserted = m.vertex.size();
   if(greedy) refined = refine(m, o, heights, budget);
+  const std::size_t mended = o.boundary ? refine_border(m, o, heights, greedy, budget, first_inserted, refined, lift) : 0;
   time.refine = seconds_since(t0);
 
   bar.stage("measuring", 0.7, 0.85);
@@ -598,11 +678,12 @@ void run(Options o)
   if(!o.reconstruct.empty()) write_reconstruction(o.reconstruct, q->rendering);
   time.write = seconds_since(t0);
   time.total = seconds_since(start);
-  if(!o.stats_json.empty()) write_stats(o, in, *sampler, m, sampled, boundary, refined, q.get(), time);
+  if(!o.stats_json.empty()) write_stats(o, in, *sampler, m, sampled, boundary, mended, refined, q.get(), time);
   bar.finish();
 
   std::cerr << "penrose_mesh: " << sampled << " points";
   if(boundary) std::cerr << " + " << boundary << " on the border";
+  if(mended) std::cerr << " + " << mended << " to shape it";
   if(greedy) std::cerr << " + " << refined.number_of_inserted_points << " inserted";
   std::cerr << ", " << m.t.number_of_faces() << " triangles in " << time.total << " s (read " << time.read
             << ", sample " << time.sample << ", triangulate " << time.triangulate;

@@ -185,11 +185,30 @@ def test_boundary_points_make_the_triangles_cover_the_region():
     region = (0.0, 0.0, 2.0, 1.0)
     points, simplices = pd.triangulate(lambda x, y: 1 + x, region=region, n=5000, boundary=True)
     samples = pd.sample(lambda x, y: 1 + x, region=region, n=5000)
-    assert len(points) > len(samples)
-    assert np.array_equal(sorted_rows(points[:len(samples)]), sorted_rows(samples))
+    # the samples come first, but for those too close to the border
+    kept = sorted_rows(samples)
+    kept = kept[np.isin(kept.view([('', kept.dtype)] * 2), points.view([('', points.dtype)] * 2))[:, 0]]
+    assert np.array_equal(sorted_rows(points[:len(kept)]), kept)
+    assert 0 < len(samples) - len(kept) < 0.05 * len(samples)
+    spacing = 1.07 / np.sqrt(5000 / 4.0 * (1 + samples[:, 0]))  # the density's integral is 4
+    border_distance = np.minimum(np.minimum(samples[:, 0], 2.0 - samples[:, 0]),
+                                 np.minimum(samples[:, 1], 1.0 - samples[:, 1]))
+    dropped = ~np.isin(samples.view([('', samples.dtype)] * 2), points.view([('', points.dtype)] * 2))[:, 0]
+    assert np.all(border_distance[dropped] < 0.5 * spacing[dropped])
     area = 0.5 * orientation(points, simplices).sum()
     assert area == pytest.approx(2.0, rel=1e-12)
     assert triangle_set(simplices) == triangle_set(Delaunay(points).simplices)
+    # no triangle with a vertex on the border has an angle under 15 degrees
+    on_border = (points[:, 0] == 0.0) | (points[:, 0] == 2.0) | (points[:, 1] == 0.0) | (points[:, 1] == 1.0)
+    at_border = simplices[on_border[simplices].any(axis=1)]
+    corners = points[at_border]
+    angles = []
+    for i in range(3):
+        u = corners[:, (i + 1) % 3] - corners[:, i]
+        v = corners[:, (i + 2) % 3] - corners[:, i]
+        cross = np.abs(u[:, 0] * v[:, 1] - u[:, 1] * v[:, 0])
+        angles.append(np.degrees(np.arctan2(cross, (u * v).sum(axis=1))))
+    assert len(at_border) > 0 and np.min(angles) >= 15.0
 
 
 def test_the_gil_is_released_while_the_construction_runs():

@@ -1,0 +1,35 @@
+# Runs penrose_mesh (PENROSE_MESH) on the bundled inputs in DATA and checks
+# its meshes with mesh_check (MESH_CHECK), in WORK: the triangles at the
+# border are well shaped, and --tiles gives seamless tiles.
+file(REMOVE_RECURSE ${WORK})
+file(MAKE_DIRECTORY ${WORK})
+
+function(run_mesh)
+  execute_process(COMMAND ${PENROSE_MESH} ${ARGN} RESULT_VARIABLE rc ERROR_VARIABLE err OUTPUT_QUIET)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "penrose_mesh ${ARGN}: status ${rc}: ${err}")
+  endif()
+endfunction()
+
+# No triangle with a vertex on the border has an angle under 15 degrees: a
+# terrain (greedy insertion), an image, the ramp (no point on its left side,
+# where the density is 0), with a vertex budget or an error bound.
+set(cases
+  "--terrain|${DATA}/terrain.png|--points 2000" "--terrain|${DATA}/terrain.png|--points 20000"
+  "--terrain|${DATA}/terrain.png|--max-error 300" "--terrain|${DATA}/terrain.png|--points 20000 --base-fraction 1"
+  "--density|image:${DATA}/test_image.png|--gradient --points 5120" "--density|image:${DATA}/test_image.png|--max-error 0.05"
+  "--density|ramp|--boundary --points 1000" "--density|ramp|--boundary --points 20000")
+foreach(c ${cases})
+  string(REPLACE "|" ";" c "${c}")
+  list(GET c 0 input)
+  list(GET c 1 value)
+  list(GET c 2 options)
+  separate_arguments(options)
+  run_mesh(${input} ${value} ${options} --out-mesh ${WORK}/border.off)
+  execute_process(COMMAND ${MESH_CHECK} border-angle ${WORK}/border.off OUTPUT_VARIABLE angle RESULT_VARIABLE rc)
+  string(STRIP "${angle}" angle)
+  if(NOT rc EQUAL 0 OR angle LESS 15)
+    string(REPLACE ";" " " options "${options}")
+    message(FATAL_ERROR "${input} ${value} ${options}: a triangle at the border has an angle of ${angle} degrees")
+  endif()
+endforeach()
