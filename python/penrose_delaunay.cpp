@@ -19,6 +19,10 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#if defined(CGAL_LINKED_WITH_TBB)
+#  include <tbb/global_control.h>
+#endif
+
 #include <boost/iterator/function_output_iterator.hpp>
 
 #include <array>
@@ -45,7 +49,11 @@ typedef K::Iso_rectangle_2 Rectangle;
 typedef CGAL::Penrose_importance_sampler<K> Sampler;
 typedef CGAL::Triangulation_vertex_base_with_info_2<std::int32_t, K> Vb;
 typedef CGAL::Triangulation_face_base_with_info_2<std::int32_t, K> Fb;
-typedef CGAL::Penrose_Delaunay_triangulation_2<K, CGAL::Triangulation_data_structure_2<Vb, Fb>> Triangulation;
+typedef CGAL::Triangulation_data_structure_2<Vb, Fb> Tds;
+typedef CGAL::Penrose_Delaunay_triangulation_2<K, Tds> Triangulation;
+#if defined(CGAL_LINKED_WITH_TBB)
+typedef CGAL::Penrose_Delaunay_triangulation_2<K, Tds, CGAL::Parallel_tag> Parallel_triangulation;
+#endif
 
 // What the Python functions were asked for, checked.
 struct Request
@@ -55,6 +63,7 @@ struct Request
   double scale = 1.;
   bool correction = true;
   std::optional<std::array<double, 4>> window;  // the part of the region sampled, if not all of it
+  long long threads = 1;                         // 1: Sequential_tag; 0: as many as TBB allows
 };
 
 void check_rectangle(const char* name, const std::array<double, 4>& r)
@@ -71,6 +80,7 @@ struct Density
   std::function<double(const Point&)> value;
   std::function<double(const Rectangle&)> upper_bound;  // empty: the sampler probes
   std::function<double(double, double)> on_border;      // empty: `value`
+  bool thread_safe = true;  // whether `value` may be called from TBB's threads
 
   double at_border(double x, double y) const { return on_border ? on_border(x, y) : value(Point(x, y)); }
 };
@@ -127,20 +137,21 @@ struct Mesh
 // The vertices are numbered in the order the construction reports them, then
 // the border points and the points that shape the triangles at the border;
 // the finite faces in the triangulation's order.
-Mesh triangulate_samples(const Request& r, const Density& d, bool boundary, bool neighbors)
+template <class Triangulation>
+Mesh triangulate_samples_with(const Request& r, const Density& d, bool boundary, bool neighbors)
 {
   const std::unique_ptr<Sampler> sampler = make_sampler(r, d);
   Mesh m;
   m.xy.reserve(2 * std::size_t(sampler->expected_number_of_points() * 1.05 + 16));
   Triangulation t;
-  auto number = [&m](Triangulation::Vertex_handle v, const Point& p) {
+  auto number = [&m](typename Triangulation::Vertex_handle v, const Point& p) {
     v->info() = std::int32_t(m.xy.size() / 2);
     m.xy.push_back(p.x());
     m.xy.push_back(p.y());
   };
   auto lift = [](double x, double y) { return Point(x, y); };
-  std::vector<Triangulation::Vertex_handle> samples;
-  t.build(*sampler, lift, [&samples](Triangulation::Vertex_handle v, const Sampler::Sample&) { samples.push_back(v); });
+  std::vector<typename Triangulation::Vertex_handle> samples;
+  t.build(*sampler, lift, [&samples](typename Triangulation::Vertex_handle v, const Sampler::Sample&) { samples.push_back(v); });
   const double scale = sampler->density_scale();
   std::optional<penrose_tools::Border> border;
   if(boundary) {
@@ -149,15 +160,15 @@ Mesh triangulate_samples(const Request& r, const Density& d, bool boundary, bool
   }
   for(const auto v : samples) number(v, v->point());
   if(boundary) {
-    Triangulation::Face_handle hint;
+    typename Triangulation::Face_handle hint;
     border->for_each_point([&](double x, double y) {
       const std::size_t before = t.number_of_vertices();
-      const Triangulation::Vertex_handle v = t.insert(Point(x, y), hint);
+      const typename Triangulation::Vertex_handle v = t.insert(Point(x, y), hint);
       if(t.number_of_vertices() > before) number(v, v->point());
       hint = v->face();
     });
     penrose_tools::refine_border_triangles(t, r.region, {true, true, true, true}, lift,
-                                           [&number](Triangulation::Vertex_handle v) { number(v, v->point()); });
+                                           [&number](typename Triangulation::Vertex_handle v) { number(v, v->point()); });
   }
   for(auto f : t.all_face_handles()) f->info() = -1;
   std::int32_t faces = 0;
@@ -170,6 +181,21 @@ Mesh triangulate_samples(const Request& r, const Density& d, bool boundary, bool
       if(neighbors) m.neighbors.push_back(f->neighbor(i)->info());
     }
   return m;
+}
+
+// With Sequential_tag, or Parallel_tag on `r.threads` threads (0: as many
+// as TBB allows) where TBB is linked and the density is thread-safe: the
+// same mesh either way.
+Mesh triangulate_samples(const Request& r, const Density& d, bool boundary, bool neighbors)
+{
+#if defined(CGAL_LINKED_WITH_TBB)
+  if(r.threads != 1 && d.thread_safe) {
+    if(r.threads == 0) return triangulate_samples_with<Parallel_triangulation>(r, d, boundary, neighbors);
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, std::size_t(r.threads));
+    return triangulate_samples_with<Parallel_triangulation>(r, d, boundary, neighbors);
+  }
+#endif
+  return triangulate_samples_with<Triangulation>(r, d, boundary, neighbors);
 }
 
 // Evaluates the pending points of `table` with `f`, in blocks.
@@ -278,7 +304,8 @@ auto with_density(const py::object& object, std::optional<std::array<double, 4>>
       if(v.size() != 1) throw std::invalid_argument("the density function did not return one value for one point");
       return *v.data();
     };
-    const Density d{[table](const Point& p) { return (*table)(p.x(), p.y()); }, {}, on_border};
+    // the table notes the points it does not know: the calling thread's only
+    const Density d{[table](const Point& p) { return (*table)(p.x(), p.y()); }, {}, on_border, false};
     if(sample_first) run_on_table(*table, f, [&] { return sample_coordinates(r, d).size(); });
     return run_on_table(*table, f, [&] { return construct(d); });
   }
@@ -349,9 +376,11 @@ py::array_t<double> sample(const py::object& density, const std::optional<std::a
 
 py::tuple triangulate(const py::object& density, const std::optional<std::array<double, 4>>& region,
                       const std::optional<py::object>& n, const std::optional<double>& scale, bool correction,
-                      bool boundary, bool neighbors)
+                      bool boundary, bool neighbors, long long threads)
 {
   Request r = make_request(n, scale, correction);
+  if(threads < 0) throw std::invalid_argument("threads must be 0 (all) or a positive number, not " + std::to_string(threads));
+  r.threads = threads;
   Mesh m = with_density(density, region, r, true, [&](const Density& d) {
     return triangulate_samples(r, d, boundary, neighbors);
   });
@@ -431,8 +460,9 @@ window: (x0, y0, x1, y1): only the samples of the region that lie in this
    sample once: tiles that match at their borders.)doc");
 
   m.def("triangulate", &penrose_python::triangulate, "density"_a, "region"_a = py::none(), "n"_a = py::none(),
-        "scale"_a = py::none(), "correction"_a = true, "boundary"_a = false, "neighbors"_a = false,
-        R"doc(triangulate(density, region=None, n=None, scale=None, correction=True, boundary=False, neighbors=False)
+        "scale"_a = py::none(), "correction"_a = true, "boundary"_a = false, "neighbors"_a = false, "threads"_a = 1,
+        R"doc(triangulate(density, region=None, n=None, scale=None, correction=True, boundary=False, neighbors=False,
+            threads=1)
     -> (points (N, 2) float64, simplices (M, 3) int32[, neighbors (M, 3) int32])
 
 The samples of `sample()` with the same arguments, and their Delaunay
@@ -449,5 +479,8 @@ boundary: also add points along the border of the region, spaced at the
    last (Ruppert's refinement, restricted to the border).
 neighbors: also return, as scipy.spatial.Delaunay does, the triangle
    opposite each vertex of each triangle, -1 on the convex hull.
+threads: the construction on this many threads (TBB's; 0: as many as TBB
+   allows), for a number or a raster; a function density is always
+   evaluated on the calling thread. The result is the same, bit for bit.
 The other arguments are those of `sample()`.)doc");
 }

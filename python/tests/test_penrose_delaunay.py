@@ -163,6 +163,19 @@ def test_triangles_are_scipys_for_numbers_and_functions(density):
     assert triangle_set(simplices) == triangle_set(Delaunay(points).simplices)
 
 
+@pytest.mark.parametrize("density", [1.0, "raster", "function"])
+def test_every_thread_count_gives_the_same_mesh(density):
+    # large enough for the construction's walks to be split in tasks
+    density = {1.0: 1.0, "raster": gaussian_image(128), "function": lambda x, y: 0.1 + x * x}[density]
+    n = 20000 if callable(density) else 200000
+    points, simplices, neighbors = pd.triangulate(density, n=n, boundary=True, neighbors=True)
+    for threads in [0, 2, 3]:
+        p, s, nb = pd.triangulate(density, n=n, boundary=True, neighbors=True, threads=threads)
+        assert np.array_equal(p, points) and np.array_equal(s, simplices) and np.array_equal(nb, neighbors)
+    with pytest.raises(ValueError):
+        pd.triangulate(density, n=1000, threads=-1)
+
+
 def test_neighbors_are_scipys():
     points, simplices, neighbors = pd.triangulate(gaussian_image(64), n=3000, neighbors=True)
     assert neighbors.dtype == np.int32 and neighbors.shape == simplices.shape
