@@ -29,7 +29,11 @@ inline const char* const usage_text =
   "                uniform; proportional to (x - X0) / (X1 - X0); or\n"
   "                exp(-r^2 / (2 s^2)) around the centre, s = 0.2 width, plus 5% of the peak\n"
   "  --density image:FILE\n"
-  "                the luminance of a PNG, JPG, PGM/PPM (8 or 16 bit) or Radiance .hdr image\n"
+  "                the luminance of a PNG, JPG, PGM/PPM (8 or 16 bit) or Radiance .hdr image,\n"
+  "                for importance sampling (stippling, the paper's Figure 9); with --reconstruct\n"
+  "                and none of --log, --invert, --gradient and --gamma, the mesh is made to\n"
+  "                render the image back instead: a sample for a fraction of the vertices (see\n"
+  "                --base-fraction), the rest inserted where the luminance is worst interpolated\n"
   "  --terrain FILE\n"
   "                a height field: a 16-bit grey PNG or PGM, or an ESRI ASCII grid (.asc);\n"
   "                density from its curvature (largest absolute Hessian eigenvalue, smoothed,\n"
@@ -55,7 +59,8 @@ inline const char* const usage_text =
   "                is given, until the mesh has N vertices: whichever comes first (the\n"
   "                message and \"max_error_reached\" say which). Alone, it starts from a\n"
   "                sample of a point per 1024 cells\n"
-  "  --base-fraction F  terrain, or image with --max-error: sample F x N of the N\n"
+  "  --base-fraction F  terrain, or image with --max-error or --reconstruct (see\n"
+  "                --density image:FILE): sample F x N of the N\n"
   "                vertices, then insert, one at a time, the centre of the cell of\n"
   "                largest vertical error (greedy insertion, as in delatin) until N\n"
   "                (default 0.05; 1: samples only)\n"
@@ -114,6 +119,8 @@ struct Options
   bool region_given = false, correction = true, boundary = false;
   double max_error = 0.;      // 0: not given
   double base_fraction = 0.05;
+  // an image meshed for its reconstruction, by greedy insertion on its luminance
+  bool reconstruction_mesh = false;
   double gamma = 1., height_scale = 1.;
   bool log = false, invert = false, gradient = false;
   bool viewer_given = false;
@@ -145,6 +152,7 @@ inline Options parse(int argc, const char* const* argv)
   Options o;
   bool have_points = false, have_scale = false, have_density = false;
   bool have_boundary = false, no_boundary = false, have_max_error = false, have_base_fraction = false;
+  bool have_gamma = false;
   for(int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     auto value = [&](int k = 1) -> const char* {
@@ -163,7 +171,7 @@ inline Options parse(int argc, const char* const* argv)
     else if(a == "--no-boundary") no_boundary = true;
     else if(a == "--max-error") { o.max_error = number(value(), a); have_max_error = true; ++i; }
     else if(a == "--base-fraction") { o.base_fraction = number(value(), a); have_base_fraction = true; ++i; }
-    else if(a == "--gamma") { o.gamma = number(value(), a); ++i; }
+    else if(a == "--gamma") { o.gamma = number(value(), a); have_gamma = true; ++i; }
     else if(a == "--log") o.log = true;
     else if(a == "--invert") o.invert = true;
     else if(a == "--gradient") o.gradient = true;
@@ -205,7 +213,10 @@ inline Options parse(int argc, const char* const* argv)
   if(have_base_fraction && !(o.base_fraction > 0. && o.base_fraction <= 1.)) usage_error("--base-fraction must be in (0, 1]");
   if((have_max_error || have_base_fraction) && !terrain && !image)
     usage_error("--max-error and --base-fraction apply to --terrain and images");
-  if(have_base_fraction && image && !have_max_error) usage_error("--base-fraction applies to an image with --max-error");
+  o.reconstruction_mesh = image && !o.reconstruct.empty() && !(o.log || o.invert || o.gradient || have_gamma);
+  if(have_base_fraction && image && !have_max_error && !o.reconstruction_mesh)
+    usage_error("--base-fraction applies to an image with --max-error, or with --reconstruct and none of --log,"
+                " --invert, --gradient and --gamma");
   if(have_base_fraction && have_max_error && !have_points) usage_error("--base-fraction is a fraction of --points: give both");
   return o;
 }

@@ -83,7 +83,7 @@ struct Input
   std::string file;
   Raster<float> colours;    // 3 channels, display values in [0, 1]; empty unless an image
   Raster<double> heights;   // scaled; empty unless a terrain
-  Raster<double> intensity; // the luminance of the colours; empty unless an image with --max-error
+  Raster<double> intensity; // the luminance of the colours; empty unless an image refined greedily
   Raster<double> density;   // empty for the built-in densities
 };
 
@@ -100,7 +100,7 @@ Input read_image(const Options& o)
   in.density.values = CGAL::IO::luminance(img);
   if(img.high_dynamic_range)
     for(float& v : img.values) v = std::pow(std::min(std::max(v, 0.f), 1.f), 1.f / 2.2f);
-  if(o.max_error > 0.) {  // of the display values, which --reconstruct draws
+  if(o.max_error > 0. || o.reconstruction_mesh) {  // of the display values, which --reconstruct draws
     in.intensity.width = img.width;
     in.intensity.height = img.height;
     in.intensity.values = CGAL::IO::luminance(img);
@@ -625,7 +625,8 @@ void run(Options o)
   // the grid that greedy insertion refines, and the vertices' z
   const Raster<double>& heights = in.heights.values.empty() ? in.intensity : in.heights;
   auto lift = [&heights](double x, double y) { return K::Point_3(x, y, heights.values.empty() ? 0. : heights(x, y)); };
-  // A terrain's mesh, and an image's with --max-error, is sampled for a
+  // A terrain's mesh, and an image's with --max-error or for its
+  // reconstruction (see Options::reconstruction_mesh), is sampled for a
   // fraction of its vertices, the rest inserted greedily. With --max-error
   // alone the count is not known: the sample is sparse, a point per 1024
   // cells, and greedy insertion, which needs the fewest vertices for a given

@@ -54,6 +54,17 @@ if(NOT psnr GREATER grid_psnr)
   message(FATAL_ERROR "image: the mesh's PSNR ${psnr} is not above the grid's ${grid_psnr}")
 endif()
 
+# --reconstruct without a density option: a sample, then greedy insertion on
+# the luminance, which beats the edges' importance sampling above.
+run_mesh(--density image:${DATA}/test_image.png --points 5120 --reconstruct ${WORK}/image_greedy.png
+         --stats-json ${WORK}/image_greedy.json)
+file(READ ${WORK}/image_greedy.json json)
+json_number("${json}" inserted_points inserted)
+json_number("${json}" psnr greedy_psnr)
+if(NOT rc EQUAL 0 OR NOT inserted GREATER 4000 OR NOT greedy_psnr GREATER psnr)
+  message(FATAL_ERROR "image --reconstruct: status ${rc}, ${inserted} inserted, PSNR ${greedy_psnr} (--gradient ${psnr}): ${err}")
+endif()
+
 # Bad files: exit status 1 and one line that names the file and the problem.
 file(WRITE ${WORK}/empty.png "")
 file(WRITE ${WORK}/text.png "not an image\n")

@@ -23,15 +23,7 @@ root=$(cd "$here/../../.." && pwd)
 build=${BUILD:-$root/build}
 out=${OUT:-$build/terrain_benchmark}
 points=${POINTS:-5000 20000 80000}
-python=/usr/bin/python3
-mkdir -p "$out"
-out=$(cd "$out" && pwd)
-
-[ -x "$build/tools/penrose_mesh" ] || cmake --build "$build" --target penrose_mesh
-if [ ! -d "$out/node_modules/delatin" ] || [ ! -d "$out/node_modules/@mapbox/martini" ]; then
-  (cd "$out" && npm install --no-save --no-audit --no-fund --silent delatin @mapbox/martini)
-fi
-cp "$here/greedy_meshes.mjs" "$out/"
+source "$here/tools_setup.sh"
 
 dems=()
 if [ $# -eq 0 ]; then
