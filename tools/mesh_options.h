@@ -18,7 +18,7 @@ namespace penrose_tools {
 
 inline const char* const usage_text =
   "usage: penrose_mesh (--density constant|ramp|radial|image:FILE | --terrain FILE)\n"
-  "                    [--points N | --scale S] [--max-error E] [--base-fraction F]\n"
+  "                    [--points N | --scale S] [--max-error E] [--base-fraction F] [--fit-heights]\n"
   "                    [--region X0 Y0 X1 Y1] [--no-correction] [--boundary | --no-boundary]\n"
   "                    [--gamma G] [--log] [--invert] [--gradient] [--height-scale S] [--viewer X Y]\n"
   "                    [--out-points FILE] [--out-mesh FILE] [--svg FILE] [--png FILE]\n"
@@ -64,6 +64,11 @@ inline const char* const usage_text =
   "                vertices, then insert, one at a time, the centre of the cell of\n"
   "                largest vertical error (greedy insertion, as in delatin) until N\n"
   "                (default 0.05; 1: samples only)\n"
+  "  --fit-heights terrain: once the mesh is made, give its vertices the heights that\n"
+  "                minimise the squared vertical error over all the cells it covers (least\n"
+  "                squares): the RMS error drops, the mesh no longer interpolates the height\n"
+  "                field, and its max error may grow. Not with --max-error, whose bound is\n"
+  "                that of the interpolating mesh\n"
   "  --region      the rectangle sampled (default 0 0 1 1; an image or a height field is\n"
   "                stretched over it, and by default covers 0 0 WIDTH HEIGHT, or the\n"
   "                extent in the header of an .asc grid)\n"
@@ -119,6 +124,7 @@ struct Options
   bool region_given = false, correction = true, boundary = false;
   double max_error = 0.;      // 0: not given
   double base_fraction = 0.05;
+  bool fit_heights = false;
   // an image meshed for its reconstruction, by greedy insertion on its luminance
   bool reconstruction_mesh = false;
   double gamma = 1., height_scale = 1.;
@@ -171,6 +177,7 @@ inline Options parse(int argc, const char* const* argv)
     else if(a == "--no-boundary") no_boundary = true;
     else if(a == "--max-error") { o.max_error = number(value(), a); have_max_error = true; ++i; }
     else if(a == "--base-fraction") { o.base_fraction = number(value(), a); have_base_fraction = true; ++i; }
+    else if(a == "--fit-heights") o.fit_heights = true;
     else if(a == "--gamma") { o.gamma = number(value(), a); have_gamma = true; ++i; }
     else if(a == "--log") o.log = true;
     else if(a == "--invert") o.invert = true;
@@ -217,6 +224,8 @@ inline Options parse(int argc, const char* const* argv)
   if(have_base_fraction && image && !have_max_error && !o.reconstruction_mesh)
     usage_error("--base-fraction applies to an image with --max-error, or with --reconstruct and none of --log,"
                 " --invert, --gradient and --gamma");
+  if(o.fit_heights && !terrain) usage_error("--fit-heights applies to --terrain");
+  if(o.fit_heights && have_max_error) usage_error("--fit-heights and --max-error: give one (the bound is that of the interpolating mesh)");
   if(have_base_fraction && have_max_error && !have_points) usage_error("--base-fraction is a fraction of --points: give both");
   return o;
 }

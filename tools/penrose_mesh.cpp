@@ -11,6 +11,7 @@
 #include <CGAL/Penrose_Delaunay_triangulation_2.h>
 #include <CGAL/Penrose_importance_sampler.h>
 #include <CGAL/Raster_density_2.h>
+#include <CGAL/fit_terrain_heights.h>
 #include <CGAL/refine_terrain_by_greedy_insertion.h>
 #include <CGAL/Penrose_Delaunay_triangulation_2/IO/height_field_io.h>
 #include <CGAL/Penrose_Delaunay_triangulation_2/IO/read_rgb_image.h>
@@ -354,19 +355,28 @@ penrose_tools::Plane_mesh plane_mesh(const Mesh& m)
   return p;
 }
 
-// The mesh against the raster `image` at the centres of the pixels that it
-// covers (marked in `covered`) and that `mask`, if given, holds: the largest
-// and the RMS difference between the image and its linear interpolation over
-// each face from the image sampled at the face's vertices. That
-// interpolation is drawn into `rendering`, if given.
+// The raster `image` at the vertices of `m`, image.channels values a vertex.
 template <class T>
-std::pair<double, double> compare(const penrose_tools::Plane_mesh& m, const Raster<T>& image, std::vector<char>& covered,
-                                  const std::vector<char>* mask, Raster<double>* rendering)
+std::vector<double> sample(const penrose_tools::Plane_mesh& m, const Raster<T>& image)
 {
   const std::size_t c = image.channels;
   std::vector<double> at_vertex(c * m.x.size());
   for(std::size_t v = 0; v < m.x.size(); ++v)
     for(std::size_t k = 0; k < c; ++k) at_vertex[c * v + k] = image(m.x[v], m.y[v], k);
+  return at_vertex;
+}
+
+// The mesh against the raster `image` at the centres of the pixels that it
+// covers (marked in `covered`) and that `mask`, if given, holds: the largest
+// and the RMS difference between the image and the linear interpolation over
+// each face of the values `at_vertex` (image.channels a vertex). That
+// interpolation is drawn into `rendering`, if given.
+template <class T>
+std::pair<double, double> compare(const penrose_tools::Plane_mesh& m, const std::vector<double>& at_vertex,
+                                  const Raster<T>& image, std::vector<char>& covered, const std::vector<char>* mask,
+                                  Raster<double>* rendering)
+{
+  const std::size_t c = image.channels;
   if(rendering)
     *rendering = {image.width, image.height, c, std::vector<double>(c * image.width * image.height, 0.),
                   image.x0, image.y0, image.x1, image.y1};
@@ -397,15 +407,23 @@ struct Quality
   Raster<double> rendering;  // of the mesh, if asked for
 };
 
+// A terrain's mesh is measured with the heights of its vertices (fitted by
+// --fit-heights), an image's with the colours under its vertices.
 template <class T>
-Quality measure(const Mesh& m, const Raster<T>& image, bool render)
+Quality measure(const Mesh& m, const Raster<T>& image, bool with_heights, bool render)
 {
   Quality q;
   std::vector<char> covered, grid_covered;
-  std::tie(q.max_error, q.rms_error) = compare(plane_mesh(m), image, covered, nullptr, render ? &q.rendering : nullptr);
+  const penrose_tools::Plane_mesh mesh = plane_mesh(m);
+  std::vector<double> at_vertex;
+  if(with_heights)
+    for(Vertex_handle v : m.vertex) at_vertex.push_back(v->point().z());
+  else
+    at_vertex = sample(mesh, image);
+  std::tie(q.max_error, q.rms_error) = compare(mesh, at_vertex, image, covered, nullptr, render ? &q.rendering : nullptr);
   const penrose_tools::Plane_mesh grid = penrose_tools::grid_mesh(image, m.t.number_of_vertices());
   q.grid_vertices = grid.x.size();
-  std::tie(q.grid_max_error, q.grid_rms_error) = compare(grid, image, grid_covered, &covered, nullptr);
+  std::tie(q.grid_max_error, q.grid_rms_error) = compare(grid, sample(grid, image), image, grid_covered, &covered, nullptr);
   q.coverage = double(std::count(covered.begin(), covered.end(), 1)) / double(covered.size());
   return q;
 }
@@ -510,7 +528,7 @@ void write_reconstruction(const std::string& file, const Raster<double>& r)
 
 struct Timings
 {
-  double read = 0., sample = 0., triangulate = 0., refine = 0., measure = 0., write = 0., total = 0.;
+  double read = 0., sample = 0., triangulate = 0., refine = 0., fit = 0., measure = 0., write = 0., total = 0.;
 };
 
 // A JSON number: null where the value does not exist (the PSNR of a mesh
@@ -536,7 +554,8 @@ std::string json_string(const std::string& s)
 }
 
 void write_stats(const Options& o, const Input& in, const Sampler& sampler, const Mesh& m, std::size_t sampled,
-                 std::size_t boundary, std::size_t mended, const CGAL::Terrain_refinement_result& refined, const Quality* q,
+                 std::size_t boundary, std::size_t mended, const CGAL::Terrain_refinement_result& refined,
+                 const CGAL::Terrain_fit_result& fitted, const Quality* q,
                  const Timings& t)
 {
   std::string j = "{", separator;
@@ -555,11 +574,17 @@ void write_stats(const Options& o, const Input& in, const Sampler& sampler, cons
   field("faces", count(m.t.number_of_faces()));
   field("flips", count(m.t.number_of_flips()));
   field("fallbacks", count(m.t.number_of_fallbacks()));
+  if(o.fit_heights) {
+    field("fit_rms_error_before", json_number(fitted.rms_error_before));
+    field("fit_rms_error_after", json_number(fitted.rms_error_after));
+    field("fit_iterations", count(fitted.number_of_iterations));
+  }
   separator = ",\n ";
   field("read_seconds", json_number(t.read));
   field("sample_seconds", json_number(t.sample));
   field("triangulate_seconds", json_number(t.triangulate));
   field("refine_seconds", json_number(t.refine));
+  if(o.fit_heights) field("fit_seconds", json_number(t.fit));
   field("measure_seconds", json_number(t.measure));
   field("write_seconds", json_number(t.write));
   field("total_seconds", json_number(t.total));
@@ -660,13 +685,19 @@ void run(Options o)
   if(greedy) refined = refine(m, o, heights, budget);
   const std::size_t mended = o.boundary ? refine_border(m, o, heights, greedy, budget, first_inserted, refined, lift) : 0;
   time.refine = seconds_since(t0);
+  t0 = std::chrono::steady_clock::now();
+  CGAL::Terrain_fit_result fitted;
+  if(o.fit_heights)
+    fitted = CGAL::fit_terrain_heights(m.t, heights.width, heights.height, heights.values,
+                                       CGAL::Bbox_2(heights.x0, heights.y0, heights.x1, heights.y1));
+  time.fit = seconds_since(t0);
 
   bar.stage("measuring", 0.7, 0.85);
   t0 = std::chrono::steady_clock::now();
   std::unique_ptr<Quality> q;
   if(!o.stats_json.empty() || !o.reconstruct.empty()) {
-    if(!in.heights.values.empty()) q = std::make_unique<Quality>(measure(m, in.heights, false));
-    else if(!in.colours.values.empty()) q = std::make_unique<Quality>(measure(m, in.colours, !o.reconstruct.empty()));
+    if(!in.heights.values.empty()) q = std::make_unique<Quality>(measure(m, in.heights, true, false));
+    else if(!in.colours.values.empty()) q = std::make_unique<Quality>(measure(m, in.colours, false, !o.reconstruct.empty()));
   }
   time.measure = seconds_since(t0);
 
@@ -679,7 +710,7 @@ void run(Options o)
   if(!o.reconstruct.empty()) write_reconstruction(o.reconstruct, q->rendering);
   time.write = seconds_since(t0);
   time.total = seconds_since(start);
-  if(!o.stats_json.empty()) write_stats(o, in, *sampler, m, sampled, boundary, mended, refined, q.get(), time);
+  if(!o.stats_json.empty()) write_stats(o, in, *sampler, m, sampled, boundary, mended, refined, fitted, q.get(), time);
   bar.finish();
 
   std::cerr << "penrose_mesh: " << sampled << " points";
@@ -689,11 +720,16 @@ void run(Options o)
   std::cerr << ", " << m.t.number_of_faces() << " triangles in " << time.total << " s (read " << time.read
             << ", sample " << time.sample << ", triangulate " << time.triangulate;
   if(greedy) std::cerr << ", refine " << time.refine;
+  if(o.fit_heights) std::cerr << ", fit " << time.fit;
   std::cerr << ")\n";
   if(greedy && o.max_error > 0.)
     std::cerr << "penrose_mesh: " << (refined.max_error_reached ? "every cell within --max-error "
                                                                 : "stopped at --points vertices with a max error of ")
               << (refined.max_error_reached ? o.max_error : refined.max_error) << "\n";
+  if(o.fit_heights)
+    std::cerr << "penrose_mesh: heights fitted in " << fitted.number_of_iterations << " iterations, rms error "
+              << fitted.rms_error_before << " -> " << fitted.rms_error_after << " over the " << fitted.number_of_cells
+              << " cells covered\n";
   if(q && !in.heights.values.empty())
     std::cerr << "penrose_mesh: rms error " << q->rms_error << " (grid " << q->grid_rms_error << "), max error "
               << q->max_error << " (grid " << q->grid_max_error << ")\n";

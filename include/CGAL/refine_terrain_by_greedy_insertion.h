@@ -5,6 +5,7 @@
 #define CGAL_REFINE_TERRAIN_BY_GREEDY_INSERTION_H
 
 #include <CGAL/Penrose_Delaunay_triangulation_2/named_parameters.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/Terrain_grid.h>
 
 #include <CGAL/Bbox_2.h>
 #include <CGAL/Named_function_parameters.h>
@@ -13,7 +14,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
-#include <iterator>
 #include <limits>
 #include <queue>
 #include <stdexcept>
@@ -67,11 +67,8 @@ class Greedy_terrain_refinement
   };
 
 public:
-  Greedy_terrain_refinement(DT& dt, std::size_t width, std::size_t height, const HeightRange& heights,
-                            const Bbox_2& region)
-    : dt_(dt), w_(width), h_(height), heights_(heights), x0_(region.xmin()), y1_(region.ymax()),
-      cell_x_((region.xmax() - region.xmin()) / double(width)),
-      cell_y_((region.ymax() - region.ymin()) / double(height)), at_vertex_(width * height, 0)
+  Greedy_terrain_refinement(DT& dt, const Terrain_grid& grid, const HeightRange& heights)
+    : dt_(dt), grid_(grid), heights_(heights), at_vertex_(grid.width() * grid.height(), 0)
   {}
 
   template <class Visitor>
@@ -94,8 +91,8 @@ public:
         break;
       }
       pop();
-      const std::size_t i = e.cell % w_, j = e.cell / w_;
-      const Point p(x0_ + (double(i) + 0.5) * cell_x_, y1_ - (double(j) + 0.5) * cell_y_, double(heights_[e.cell]));
+      const std::size_t i = e.cell % grid_.width(), j = e.cell / grid_.width();
+      const Point p(grid_.x(i), grid_.y(j), double(heights_[e.cell]));
       const std::size_t before = dt_.number_of_vertices();
       const Vertex_handle v = dt_.insert(p, e.face);
       at_vertex_[e.cell] = 1;
@@ -131,22 +128,15 @@ private:
     return true;
   }
 
-  // The cell coordinates of a point: cell (i, j) is centred at (i, j).
-  double u(const Point& p) const { return (to_double(p.x()) - x0_) / cell_x_ - 0.5; }
-  double v(const Point& p) const { return (y1_ - to_double(p.y())) / cell_y_ - 0.5; }
-
   // Returns the largest error of the finite face `f`, and queues its cell if
-  // the error is above `queued_above`. Each row's span is bounded
-  // by the crossings of its edges, each computed from the edge's endpoints in
-  // a fixed order and kept inclusive: two faces find the same crossing on
-  // their common edge, so that every cell covered is scanned.
+  // the error is above `queued_above`.
   double scan(Face_handle f, double queued_above)
   {
     double u[3], v[3], z[3];
     for(int k = 0; k < 3; ++k) {
       const Point& p = f->vertex(k)->point();
-      u[k] = this->u(p);
-      v[k] = this->v(p);
+      u[k] = grid_.u(p);
+      v[k] = grid_.v(p);
       z[k] = to_double(p.z());
     }
     // the linear interpolation of the heights, z[0] + a (u - u[0]) + b (v - v[0])
@@ -154,39 +144,13 @@ private:
     if(d == 0.) return 0.;  // no area in doubles: its cells are on its neighbours' edges
     const double a = ((z[1] - z[0]) * (v[2] - v[0]) - (z[2] - z[0]) * (v[1] - v[0])) / d;
     const double b = ((u[1] - u[0]) * (z[2] - z[0]) - (u[2] - u[0]) * (z[1] - z[0])) / d;
-    const double v_lo = (std::max)(0., std::ceil((std::min)({v[0], v[1], v[2]})));
-    const double v_hi = (std::min)(double(h_) - 1., std::floor((std::max)({v[0], v[1], v[2]})));
     double worst = 0.;
     std::size_t worst_cell = 0;
-    int from[3], to[3];  // each edge from its lower endpoint (in v, then u) up
-    double slope[3];
-    for(int k = 0; k < 3; ++k) {
-      from[k] = k;
-      to[k] = (k + 1) % 3;
-      if(v[to[k]] < v[from[k]] || (v[to[k]] == v[from[k]] && u[to[k]] < u[from[k]])) std::swap(from[k], to[k]);
-      slope[k] = v[to[k]] == v[from[k]] ? 0. : (u[to[k]] - u[from[k]]) / (v[to[k]] - v[from[k]]);
-    }
-    for(double row = v_lo; row <= v_hi; ++row) {
-      double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-      for(int k = 0; k < 3; ++k) {
-        const int p = from[k], q = to[k];
-        if(row < v[p] || row > v[q]) continue;
-        if(v[p] == v[q]) {
-          lo = (std::min)(lo, u[p]);
-          hi = (std::max)(hi, u[q]);
-        } else {
-          const double c = u[p] + (row - v[p]) * slope[k];
-          lo = (std::min)(lo, c);
-          hi = (std::max)(hi, c);
-        }
-      }
-      // clamped to the grid before the conversions
-      const long i_lo = long((std::min)(double(w_), (std::max)(0., std::ceil(lo))));
-      const long i_hi = long((std::max)(-1., (std::min)(double(w_) - 1., std::floor(hi))));
-      const std::size_t row_start = std::size_t(row) * w_;
-      const double row_height = z[0] + b * (row - v[0]);
-      for(long i = i_lo; i <= i_hi; ++i) {
-        const std::size_t cell = row_start + std::size_t(i);
+    grid_.for_each_row(u, v, [&](std::size_t row, std::size_t i_lo, std::size_t i_hi) {
+      const std::size_t row_start = row * grid_.width();
+      const double row_height = z[0] + b * (double(row) - v[0]);
+      for(std::size_t i = i_lo; i <= i_hi; ++i) {
+        const std::size_t cell = row_start + i;
         if(at_vertex_[cell]) continue;
         const double e = std::abs(row_height + a * (double(i) - u[0]) - double(heights_[cell]));
         if(e > worst) {
@@ -194,7 +158,7 @@ private:
           worst_cell = cell;
         }
       }
-    }
+    });
     if(worst > queued_above) {
       const Entry e{worst_cell, f, {f->vertex(0), f->vertex(1), f->vertex(2)}};
       if(free_.empty()) {
@@ -216,9 +180,8 @@ private:
   }
 
   DT& dt_;
-  std::size_t w_, h_;
+  const Terrain_grid& grid_;
   const HeightRange& heights_;
-  double x0_, y1_, cell_x_, cell_y_;
   // The cells at a vertex with their height, whose error is 0: the plane
   // through a face, rounded, may miss it by an ulp, which inserting the
   // cell again would not cure.
@@ -249,7 +212,10 @@ at its centre with its height. The triangulation is typically a
 `Penrose_Delaunay_triangulation_2` built from samples of the grid, for
 example with the density that `penrose_mesh --terrain` takes from its
 curvature, and lifted to the heights of the grid. It stays a Delaunay
-triangulation of its points.
+triangulation of its points. An image is a terrain too, its luminance (or
+any channel) the heights: the refinement then makes a mesh that renders the
+image back, as `penrose_mesh --reconstruct` does. `fit_terrain_heights()`
+can follow, for a lower RMS error without the interpolation.
 
 Each face keeps its worst cell in a priority queue; an insertion rescans only
 the faces it creates, so the cost is that of the insertions plus a scan of
@@ -294,19 +260,9 @@ Terrain_refinement_result refine_terrain_by_greedy_insertion(DT& dt, std::size_t
   const std::size_t n = choose_parameter(get_parameter(np, Penrose_np::number_of_points),
                                          (std::numeric_limits<std::size_t>::max)());
   auto visitor = choose_parameter(get_parameter(np, internal_np::visitor), [](typename DT::Vertex_handle) {});
-  const std::size_t size = std::size_t(std::distance(std::begin(heights), std::end(heights)));
-  if(width == 0 || height == 0 || height > size / width || size != width * height)
-    throw std::invalid_argument("refine_terrain_by_greedy_insertion: the grid is empty or its size does not match");
-  for(std::size_t k = 0; k < size; ++k)
-    if(!std::isfinite(double(heights[k])))
-      throw std::invalid_argument("refine_terrain_by_greedy_insertion: the height of cell (" + std::to_string(k % width)
-                                  + ", " + std::to_string(k / width) + ") is not finite");
-  const double inf = std::numeric_limits<double>::infinity();
-  if(!(region.xmax() > region.xmin() && region.ymax() > region.ymin() && region.xmax() - region.xmin() < inf
-       && region.ymax() - region.ymin() < inf))
-    throw std::invalid_argument("refine_terrain_by_greedy_insertion: the region is empty or not finite");
+  const internal::Penrose::Terrain_grid grid(width, height, heights, region, "refine_terrain_by_greedy_insertion");
   if(!(e >= 0.)) throw std::invalid_argument("refine_terrain_by_greedy_insertion: max_error must be non-negative");
-  internal::Penrose::Greedy_terrain_refinement<DT, HeightRange> refinement(dt, width, height, heights, region);
+  internal::Penrose::Greedy_terrain_refinement<DT, HeightRange> refinement(dt, grid, heights);
   return refinement.run(e, n, visitor);
 }
 

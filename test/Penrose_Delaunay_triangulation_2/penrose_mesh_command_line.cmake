@@ -200,6 +200,16 @@ if(NOT rc EQUAL 0 OR NOT json MATCHES "\"max_error_reached\": true" OR NOT verti
   message(FATAL_ERROR "image --max-error 0.05: status ${rc}, ${vertices} vertices, PSNR ${psnr} (grid ${grid_psnr}): ${err}")
 endif()
 
+# --fit-heights lowers the RMS error of the mesh, which no longer interpolates the heights.
+run_mesh(--terrain ${DATA}/terrain.png --points 5000 --fit-heights --stats-json ${WORK}/fit.json)
+file(READ ${WORK}/fit.json json)
+json_number("${json}" rms_error rms)
+json_number("${json}" fit_rms_error_before before)
+json_number("${json}" fit_rms_error_after after)
+if(NOT rc EQUAL 0 OR NOT rms LESS before OR NOT after LESS before)
+  message(FATAL_ERROR "--fit-heights: status ${rc}, rms error ${rms} (measured), ${before} -> ${after} (fit): ${err}")
+endif()
+
 # The border is on by default for terrains (and images), off with --no-boundary.
 foreach(option "" --no-boundary)
   run_mesh(--terrain ${DATA}/terrain.png --points 2000 ${option} --stats-json ${WORK}/border.json)
@@ -212,7 +222,8 @@ endforeach()
 foreach(c "--max-error 0|--max-error must be positive" "--max-error -1|--max-error must be positive"
           "--max-error nan|--max-error expects a number" "--base-fraction 0|--base-fraction must be in"
           "--base-fraction 1.5|--base-fraction must be in" "--boundary --no-boundary|--no-boundary, not both"
-          "--max-error 1 --base-fraction 0.5|--base-fraction is a fraction of --points")
+          "--max-error 1 --base-fraction 0.5|--base-fraction is a fraction of --points"
+          "--max-error 300 --fit-heights|--fit-heights and --max-error: give one")
   string(REPLACE "|" ";" c "${c}")
   list(GET c 0 options)
   list(GET c 1 why)
@@ -226,6 +237,12 @@ run_mesh(--density constant --max-error 1)
 if(NOT rc EQUAL 2 OR NOT err MATCHES "--max-error and --base-fraction apply to --terrain and images")
   message(FATAL_ERROR "--density constant --max-error 1: got ${rc}: ${err}")
 endif()
+foreach(density image:${DATA}/test_image.png constant)
+  run_mesh(--density ${density} --fit-heights)
+  if(NOT rc EQUAL 2 OR NOT err MATCHES "^penrose_mesh: --fit-heights applies to --terrain[^\n]*\n$")
+    message(FATAL_ERROR "--density ${density} --fit-heights: got ${rc}: ${err}")
+  endif()
+endforeach()
 run_mesh(--density image:${DATA}/test_image.png --base-fraction 0.5)
 if(NOT rc EQUAL 2 OR NOT err MATCHES "--base-fraction applies to an image with --max-error")
   message(FATAL_ERROR "image --base-fraction 0.5: got ${rc}: ${err}")

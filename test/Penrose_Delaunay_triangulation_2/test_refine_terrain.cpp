@@ -1,11 +1,14 @@
 // Copyright (c) 2026 The Penrose_Delaunay_triangulation_2 authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// refine_terrain_by_greedy_insertion(): the error bound, checked at every
-// cell by locating its centre in the triangulation (CGAL's exact point
-// location, not the refinement's own rasterisation); the vertex budget; the
-// triangulation valid and Delaunay afterwards; what it throws.
+// refine_terrain_by_greedy_insertion() and fit_terrain_heights(): the error
+// bound, checked at every cell by locating its centre in the triangulation
+// (CGAL's exact point location, not the refinement's own rasterisation); the
+// vertex budget; an image's luminance meshed better than a regular grid; the
+// RMS error lowered by the fit; the triangulation valid and Delaunay
+// afterwards; what they throw.
 
+#include <CGAL/fit_terrain_heights.h>
 #include <CGAL/refine_terrain_by_greedy_insertion.h>
 #include <CGAL/Penrose_Delaunay_triangulation_2.h>
 
@@ -15,6 +18,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <limits>
@@ -28,12 +32,34 @@ typedef CGAL::Projection_traits_xy_3<K> Gt;
 typedef CGAL::Penrose_Delaunay_triangulation_2<Gt> Penrose_dt;
 typedef CGAL::Delaunay_triangulation_2<Gt> Cgal_dt;
 
-// A 37 x 23 grid over [-2, 3] x [1, 4]: a bump, a ridge and a crease.
+// By default a 37 x 23 grid over [-2, 3] x [1, 4]: a bump, a ridge and a crease.
 struct Grid
 {
   std::size_t width = 37, height = 23;
   CGAL::Bbox_2 region{-2., 1., 3., 4.};
   std::vector<double> heights;
+
+  // An image's luminance, from 0 to 1 in steps of 1/255, one unit a pixel:
+  // a shaded background, a dark disc, a bright rectangle and thin stripes,
+  // whose sharp edges a regular grid blurs.
+  static Grid image()
+  {
+    Grid g;
+    g.width = 96;
+    g.height = 64;
+    g.region = CGAL::Bbox_2(0., 0., 96., 64.);
+    g.heights.clear();
+    for(std::size_t j = 0; j < g.height; ++j)
+      for(std::size_t i = 0; i < g.width; ++i) {
+        const double x = g.x(i), y = g.y(j);
+        double l = 0.2 + 0.5 * x / 96.;
+        if((x - 30.) * (x - 30.) + (y - 40.) * (y - 40.) < 15. * 15.) l = 0.1;
+        if(x > 55. && x < 85. && y > 10. && y < 30.) l = 0.9 - 0.01 * (y - 10.);
+        if(y < 6. && int(x / 4.) % 2 == 0) l = 1.;
+        g.heights.push_back(std::round(255. * l) / 255.);
+      }
+    return g;
+  }
 
   // as the refinement places them
   double x(std::size_t i) const { return region.xmin() + (double(i) + 0.5) * ((region.xmax() - region.xmin()) / double(width)); }
@@ -51,13 +77,18 @@ struct Grid
   }
 };
 
-// The largest error over the cells whose centre lies in a finite face, each
-// located with CGAL's predicates and interpolated with its barycentric
-// coordinates; `uncovered` counts the others.
-template <class DT>
-double independent_max_error(const DT& dt, const Grid& g, std::size_t& uncovered)
+// The largest and the RMS error over the cells whose centre lies in a
+// finite face, each located with CGAL's predicates and interpolated with its
+// barycentric coordinates; `uncovered` counts the others.
+struct Errors
 {
-  double largest = 0.;
+  double max = 0., rms = 0.;
+};
+
+template <class DT>
+Errors independent_errors(const DT& dt, const Grid& g, std::size_t& uncovered)
+{
+  double largest = 0., squares = 0.;
   uncovered = 0;
   for(std::size_t j = 0; j < g.height; ++j)
     for(std::size_t i = 0; i < g.width; ++i) {
@@ -74,9 +105,18 @@ double independent_max_error(const DT& dt, const Grid& g, std::size_t& uncovered
       const double b1 = ((x - px[0]) * (py[2] - py[0]) - (px[2] - px[0]) * (y - py[0])) / area;
       const double b2 = ((px[1] - px[0]) * (y - py[0]) - (x - px[0]) * (py[1] - py[0])) / area;
       const double z = (1. - b1 - b2) * pz[0] + b1 * pz[1] + b2 * pz[2];
-      largest = std::max(largest, std::abs(z - g.heights[j * g.width + i]));
+      const double e = z - g.heights[j * g.width + i];
+      largest = std::max(largest, std::abs(e));
+      squares += e * e;
     }
-  return largest;
+  const std::size_t covered = g.width * g.height - uncovered;
+  return {largest, covered ? std::sqrt(squares / double(covered)) : 0.};
+}
+
+template <class DT>
+double independent_max_error(const DT& dt, const Grid& g, std::size_t& uncovered)
+{
+  return independent_errors(dt, g, uncovered).max;
 }
 
 // A Penrose triangulation of the grid's region, lifted to f, not to the
@@ -181,6 +221,114 @@ TEST(RefineTerrain, VertexAtACellCentreTakesItsHeight)
   EXPECT_EQ(v->point().z(), g.heights[11 * g.width + 18]);
   EXPECT_LE(independent_max_error(dt, g, uncovered), 0.5 + tolerance * 20.);
   EXPECT_TRUE(dt.is_valid());
+}
+
+// An image's luminance, refined from a sample of 1% of its pixels to 5%:
+// a lower RMS error than a regular grid of as many vertices; then every cell
+// within max_error with a fraction of the pixels.
+TEST(RefineTerrain, ImageLuminanceBeatsTheRegularGrid)
+{
+  const Grid g = Grid::image();
+  const std::size_t n = g.width * g.height / 20;
+  Penrose_dt dt = sampled(g, n / 5);
+  for(auto v : dt.finite_vertex_handles()) {  // lifted to the luminance of the pixel under them
+    const auto& p = v->point();
+    const std::size_t i = std::min(g.width - 1, std::size_t(p.x()));
+    const std::size_t j = std::min(g.height - 1, std::size_t(g.region.ymax() - p.y()));
+    v->set_point(K::Point_3(p.x(), p.y(), g.heights[j * g.width + i]));
+  }
+  const CGAL::Terrain_refinement_result r = CGAL::refine_terrain_by_greedy_insertion(
+    dt, g.width, g.height, g.heights, g.region, CGAL::parameters::number_of_points(n));
+  EXPECT_EQ(dt.number_of_vertices(), n);
+  std::size_t uncovered = 0;
+  const Errors mesh = independent_errors(dt, g, uncovered);
+  EXPECT_NEAR(mesh.max, r.max_error, tolerance);
+
+  Cgal_dt grid;  // nx x ny cell centres, at most n
+  const std::size_t nx = std::size_t(std::sqrt(double(n) * double(g.width) / double(g.height))), ny = n / nx;
+  for(std::size_t b = 0; b < ny; ++b)
+    for(std::size_t a = 0; a < nx; ++a) {
+      const std::size_t i = a * (g.width - 1) / (nx - 1), j = b * (g.height - 1) / (ny - 1);
+      grid.insert(K::Point_3(g.x(i), g.y(j), g.heights[j * g.width + i]));
+    }
+  ASSERT_LE(grid.number_of_vertices(), n);
+  std::size_t grid_uncovered = 0;
+  const Errors regular = independent_errors(grid, g, grid_uncovered);
+  EXPECT_EQ(grid_uncovered, 0u);
+  EXPECT_LT(mesh.rms, 0.5 * regular.rms) << "grid of " << grid.number_of_vertices() << " vertices";
+
+  const CGAL::Terrain_refinement_result bounded = CGAL::refine_terrain_by_greedy_insertion(
+    dt, g.width, g.height, g.heights, g.region, CGAL::parameters::max_error(0.02));
+  EXPECT_TRUE(bounded.max_error_reached);
+  EXPECT_LE(independent_max_error(dt, g, uncovered), 0.02 + tolerance);
+  EXPECT_LT(dt.number_of_vertices(), g.width * g.height / 4);
+  EXPECT_TRUE(dt.is_valid());
+}
+
+// The least-squares fit lowers the RMS error, as measured independently, and
+// leaves the triangulation's x and y.
+TEST(FitTerrainHeights, LowersTheRmsError)
+{
+  for(const Grid& g : {Grid(), Grid::image()}) {
+    Penrose_dt dt = sampled(g, 40);
+    CGAL::refine_terrain_by_greedy_insertion(dt, g.width, g.height, g.heights, g.region,
+                                             CGAL::parameters::number_of_points(g.width * g.height / 8));
+    std::vector<K::Point_2> before;
+    for(auto v : dt.finite_vertex_handles()) before.emplace_back(v->point().x(), v->point().y());
+    std::size_t uncovered = 0, uncovered_after = 0;
+    const Errors interpolating = independent_errors(dt, g, uncovered);
+    const CGAL::Terrain_fit_result r = CGAL::fit_terrain_heights(dt, g.width, g.height, g.heights, g.region);
+    const Errors fitted = independent_errors(dt, g, uncovered_after);
+    EXPECT_EQ(uncovered_after, uncovered);
+    EXPECT_EQ(r.number_of_cells, g.width * g.height - uncovered);
+    EXPECT_NEAR(r.rms_error_before, interpolating.rms, tolerance);
+    EXPECT_NEAR(r.rms_error_after, fitted.rms, tolerance);
+    EXPECT_LT(fitted.rms, 0.95 * interpolating.rms);
+    EXPECT_GT(r.number_of_iterations, 0u);
+    std::size_t k = 0;
+    for(auto v : dt.finite_vertex_handles()) EXPECT_EQ(K::Point_2(v->point().x(), v->point().y()), before[k++]);
+    EXPECT_TRUE(dt.is_valid());
+  }
+}
+
+// Where every cell's centre is a vertex, off its height, the fit gives each
+// its cell's height; vertices among them that no cell constrains (their
+// faces cover only the cell centres at their other vertices, where their
+// weight is rounding) keep their heights instead of running away.
+TEST(FitTerrainHeights, UnconstrainedVerticesKeepTheirHeights)
+{
+  const Grid g;
+  Cgal_dt dt;
+  for(std::size_t j = 0; j < g.height; ++j)
+    for(std::size_t i = 0; i < g.width; ++i)
+      dt.insert(K::Point_3(g.x(i), g.y(j), g.heights[j * g.width + i] + std::sin(double(i * j))));
+  const double dx = 5. / 37., dy = 3. / 23.;
+  std::vector<Cgal_dt::Vertex_handle> loose;
+  for(std::size_t k = 0; k < 20; ++k)
+    loose.push_back(dt.insert(K::Point_3(g.x(k + 5) + 0.3 * dx, g.y(k % 19 + 2) - 0.4 * dy, 100.)));
+  const CGAL::Terrain_fit_result r = CGAL::fit_terrain_heights(dt, g.width, g.height, g.heights, g.region);
+  EXPECT_GT(r.rms_error_before, 0.1);
+  // the pinning holds each vertex back by 10^-6 of its move (at most 1 here)
+  EXPECT_LE(r.rms_error_after, 2e-6);
+  for(auto v : loose) EXPECT_NEAR(v->point().z(), 100., 1e-3);
+  std::size_t uncovered = 0;
+  EXPECT_LE(independent_max_error(dt, g, uncovered), 2e-6);
+}
+
+TEST(FitTerrainHeights, ThrowsOnBadInputAndLeavesTheTriangulation)
+{
+  const Grid g;
+  Penrose_dt dt = sampled(g, 60);
+  std::vector<double> z;
+  for(auto v : dt.finite_vertex_handles()) z.push_back(v->point().z());
+  std::vector<double> nan = g.heights;
+  nan[3] = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW(CGAL::fit_terrain_heights(dt, g.width, g.height + 1, g.heights, g.region), std::invalid_argument);
+  EXPECT_THROW(CGAL::fit_terrain_heights(dt, g.width, g.height, nan, g.region), std::invalid_argument);
+  EXPECT_THROW(CGAL::fit_terrain_heights(dt, g.width, g.height, g.heights, CGAL::Bbox_2(0., 0., 1., 0.)),
+               std::invalid_argument);
+  std::size_t k = 0;
+  for(auto v : dt.finite_vertex_handles()) EXPECT_EQ(v->point().z(), z[k++]);
 }
 
 TEST(RefineTerrain, ThrowsOnBadInputAndLeavesTheTriangulation)
