@@ -20,6 +20,10 @@
 //       included) or CGAL's range insertion of the same points (sampling not
 //       timed); run it in a loop for fresh processes, where no run inherits
 //       the allocator's warm pages
+//   triangulation_benchmark stages [N=1e6] [constant|ramp] [runs=5]
+//       ms spent in each step of the construction (sampling included),
+//       medians over the runs in this process, told apart by the advancement
+//       that build()'s callback reports at the end of each step
 //   triangulation_benchmark check [N=1e6] [constant|ramp|image|terrain] [IMAGE=data/test_image.png]
 //       the tests' correctness checks at the bars' sizes, which the tests do
 //       not reach, on the inputs of Figure 8: is_valid(), no more fallbacks
@@ -164,6 +168,47 @@ static int scaling(const std::string& input)
   return 0;
 }
 
+// The steps of the construction, each with the advancement that its end
+// reports (Triangulation_construction.h; the base mesh's own end is not
+// reported apart); the last one ends with build().
+struct Step
+{
+  const char* name;
+  double ends_at;
+};
+static const Step steps[] = {{"base mesh (sampling included), vertices that are no samples removed", 0.61},
+                             {"moves to the corrected positions", 0.66},
+                             {"Lawson flips (TDS reserved beside them)", 0.84},
+                             {"writing the TDS", 0.99},
+                             {"fallbacks and removal of the frame", 1.}};
+
+template <class Pdt>
+static int stages(double n, const std::string& input, int runs)
+{
+  constexpr std::size_t count = sizeof(steps) / sizeof(steps[0]);
+  std::vector<std::vector<double>> ms(count);
+  std::vector<double> total;
+  const Sampler sampler = benchmark_support::unit_square_sampler<K>(input, n);
+  for(int r = 0; r < runs; ++r) {
+    std::vector<double> end(count, 0.);
+    std::size_t step = 0;
+    const double t0 = now();
+    const std::function<bool(double)> callback = [&](double advancement) {
+      // the first report at or past a step's end is that step's end
+      for(; step < count && advancement >= steps[step].ends_at; ++step) end[step] = now();
+      return true;
+    };
+    Pdt pdt;
+    pdt.build(sampler, [](double x, double y) { return Point(x, y); },
+              [](typename Pdt::Vertex_handle, const Sampler::Sample&) {}, CGAL::parameters::callback(callback));
+    total.push_back((now() - t0) * 1e3);
+    for(std::size_t i = 0; i < count; ++i) ms[i].push_back((end[i] - (i == 0 ? t0 : end[i - 1])) * 1e3);
+  }
+  for(std::size_t i = 0; i < count; ++i) std::cout << steps[i].name << ": " << median(ms[i]) << " ms\n";
+  std::cout << "construction: " << median(total) << " ms (median of " << runs << ")\n";
+  return 0;
+}
+
 template <class Pdt>
 static int once(double n, const std::string& input, const std::string& method)
 {
@@ -230,6 +275,7 @@ static int run(int argc, char** argv)
   if(mode == "speed") return speed<Pdt>(std::atof(arg(2, "1e6").c_str()), arg(3, "constant"), std::atoi(arg(4, "5").c_str()));
   if(mode == "memory") return memory<Pdt>(arg(2, "penrose"), std::atof(arg(3, "1e6").c_str()));
   if(mode == "scaling") return scaling<Pdt>(arg(2, "constant"));
+  if(mode == "stages") return stages<Pdt>(std::atof(arg(2, "1e6").c_str()), arg(3, "constant"), std::atoi(arg(4, "5").c_str()));
   if(mode == "check") {
     try {
       return check<Pdt>(std::atof(arg(2, "1e6").c_str()), arg(3, "constant"), arg(4, "data/test_image.png"));
@@ -256,6 +302,7 @@ int main(int argc, char** argv)
     ((mode == "speed" && is_size(arg(2, "1e6")) && benchmark_support::is_unit_square_input(arg(3, "constant")) && std::atoi(arg(4, "5").c_str()) >= 1) ||
      (mode == "memory" && (arg(2, "penrose") == "penrose" || arg(2, "penrose") == "cgal") && is_size(arg(3, "1e6"))) ||
      (mode == "scaling" && benchmark_support::is_unit_square_input(arg(2, "constant"))) ||
+     (mode == "stages" && is_size(arg(2, "1e6")) && benchmark_support::is_unit_square_input(arg(3, "constant")) && std::atoi(arg(4, "5").c_str()) >= 1) ||
      (mode == "once" && is_size(arg(2, "1e6")) && benchmark_support::is_unit_square_input(arg(3, "constant")) &&
       (arg(4, "penrose") == "penrose" || arg(4, "penrose") == "cgal")) ||
      (mode == "check" && is_size(arg(2, "1e6")) && benchmark_support::is_figure8_input(arg(3, "constant"))));
@@ -267,7 +314,7 @@ int main(int argc, char** argv)
 #endif
   if(!valid) {
     std::cerr << "usage: triangulation_benchmark [--threads T] speed [N] [constant|ramp] [runs] | memory penrose|cgal [N] | "
-                 "scaling [constant|ramp] | once [N] [constant|ramp] [penrose|cgal] | "
+                 "scaling [constant|ramp] | stages [N] [constant|ramp] [runs] | once [N] [constant|ramp] [penrose|cgal] | "
                  "check [N] [constant|ramp|image|terrain] [IMAGE]\n";
     return 2;
   }
