@@ -1,15 +1,16 @@
 // Copyright (c) 2026 The Penrose_Delaunay_triangulation_2 authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// refine_terrain_by_greedy_insertion() and fit_terrain_heights(): the error
-// bound, checked at every cell by locating its centre in the triangulation
-// (CGAL's exact point location, not the refinement's own rasterisation); the
-// vertex budget; an image's luminance meshed better than a regular grid; the
-// RMS error lowered by the fit; the triangulation valid and Delaunay
-// afterwards; what they throw.
+// refine_terrain_by_greedy_insertion(), triangulate_height_grid() and
+// fit_terrain_heights(): the error bound, checked at every cell by locating
+// its centre in the triangulation (CGAL's exact point location, not the
+// refinement's own rasterisation); the vertex budget; an image's luminance
+// meshed better than a regular grid; the RMS error lowered by the fit; the
+// triangulation valid and Delaunay afterwards; what they throw.
 
 #include <CGAL/fit_terrain_heights.h>
 #include <CGAL/refine_terrain_by_greedy_insertion.h>
+#include <CGAL/triangulate_height_grid.h>
 #include <CGAL/Penrose_Delaunay_triangulation_2.h>
 
 #include <CGAL/Delaunay_triangulation_2.h>
@@ -223,34 +224,41 @@ TEST(RefineTerrain, VertexAtACellCentreTakesItsHeight)
   EXPECT_TRUE(dt.is_valid());
 }
 
-// An image's luminance, refined from a sample of 1% of its pixels to 5%:
-// a lower RMS error than a regular grid of as many vertices; then every cell
-// within max_error with a fraction of the pixels.
-TEST(RefineTerrain, ImageLuminanceBeatsTheRegularGrid)
+// The triangulation of about n cell centres on a regular lattice, the corners included.
+Cgal_dt regular_grid(const Grid& g, std::size_t n)
 {
-  const Grid g = Grid::image();
-  const std::size_t n = g.width * g.height / 20;
-  Penrose_dt dt = sampled(g, n / 5);
-  for(auto v : dt.finite_vertex_handles()) {  // lifted to the luminance of the pixel under them
-    const auto& p = v->point();
-    const std::size_t i = std::min(g.width - 1, std::size_t(p.x()));
-    const std::size_t j = std::min(g.height - 1, std::size_t(g.region.ymax() - p.y()));
-    v->set_point(K::Point_3(p.x(), p.y(), g.heights[j * g.width + i]));
-  }
-  const CGAL::Terrain_refinement_result r = CGAL::refine_terrain_by_greedy_insertion(
-    dt, g.width, g.height, g.heights, g.region, CGAL::parameters::number_of_points(n));
-  EXPECT_EQ(dt.number_of_vertices(), n);
-  std::size_t uncovered = 0;
-  const Errors mesh = independent_errors(dt, g, uncovered);
-  EXPECT_NEAR(mesh.max, r.max_error, tolerance);
-
-  Cgal_dt grid;  // nx x ny cell centres, at most n
+  Cgal_dt grid;
   const std::size_t nx = std::size_t(std::sqrt(double(n) * double(g.width) / double(g.height))), ny = n / nx;
   for(std::size_t b = 0; b < ny; ++b)
     for(std::size_t a = 0; a < nx; ++a) {
       const std::size_t i = a * (g.width - 1) / (nx - 1), j = b * (g.height - 1) / (ny - 1);
       grid.insert(K::Point_3(g.x(i), g.y(j), g.heights[j * g.width + i]));
     }
+  return grid;
+}
+
+// An image's luminance triangulated with 5% of its pixels as vertices: the
+// whole grid covered, a lower RMS error than a regular grid of as many
+// vertices; then every cell within max_error with a fraction of the pixels.
+TEST(TriangulateHeightGrid, ImageLuminanceBeatsTheRegularGrid)
+{
+  const Grid g = Grid::image();
+  const std::size_t n = g.width * g.height / 20;
+  Penrose_dt dt;
+  std::size_t visited = 0;
+  const CGAL::Terrain_refinement_result r = CGAL::triangulate_height_grid(
+    dt, g.width, g.height, g.heights, g.region,
+    CGAL::parameters::number_of_points(n, CGAL::parameters::visitor([&](Penrose_dt::Vertex_handle) { ++visited; })));
+  EXPECT_EQ(dt.number_of_vertices(), n);
+  EXPECT_EQ(visited, n);
+  EXPECT_FALSE(r.max_error_reached);
+  EXPECT_GT(r.number_of_inserted_points, n / 2);
+  std::size_t uncovered = 0;
+  const Errors mesh = independent_errors(dt, g, uncovered);
+  EXPECT_EQ(uncovered, 0u);
+  EXPECT_NEAR(mesh.max, r.max_error, tolerance);
+
+  const Cgal_dt grid = regular_grid(g, n);
   ASSERT_LE(grid.number_of_vertices(), n);
   std::size_t grid_uncovered = 0;
   const Errors regular = independent_errors(grid, g, grid_uncovered);
@@ -262,6 +270,43 @@ TEST(RefineTerrain, ImageLuminanceBeatsTheRegularGrid)
   EXPECT_TRUE(bounded.max_error_reached);
   EXPECT_LE(independent_max_error(dt, g, uncovered), 0.02 + tolerance);
   EXPECT_LT(dt.number_of_vertices(), g.width * g.height / 4);
+  EXPECT_TRUE(dt.is_valid());
+}
+
+// max_error alone: every cell within it, from a sparse sample.
+TEST(TriangulateHeightGrid, MaxErrorAlone)
+{
+  for(const Grid& g : {Grid(), Grid::image()}) {
+    Penrose_dt dt;
+    const double e = g.width == 37 ? 0.5 : 0.02;  // a 40th of the terrain's range; 5 grey levels
+    const CGAL::Terrain_refinement_result r = CGAL::triangulate_height_grid(
+      dt, g.width, g.height, g.heights, g.region, CGAL::parameters::max_error(e));
+    std::size_t uncovered = 0;
+    EXPECT_TRUE(r.max_error_reached);
+    EXPECT_LE(independent_max_error(dt, g, uncovered), e + tolerance * 20.);
+    EXPECT_EQ(uncovered, 0u);
+    EXPECT_LT(dt.number_of_vertices(), g.width * g.height / 2);
+    EXPECT_TRUE(dt.is_valid());
+  }
+}
+
+TEST(TriangulateHeightGrid, ThrowsOnBadInput)
+{
+  const Grid g;
+  Penrose_dt dt;
+  using namespace CGAL::parameters;
+  auto triangulate = [&](const auto& np) { CGAL::triangulate_height_grid(dt, g.width, g.height, g.heights, g.region, np); };
+  EXPECT_THROW(triangulate(base_fraction(0.05)), std::invalid_argument);  // no bound
+  EXPECT_THROW(triangulate(number_of_points(3)), std::invalid_argument);
+  EXPECT_THROW(triangulate(max_error(0.)), std::invalid_argument);
+  EXPECT_THROW(triangulate(max_error(std::numeric_limits<double>::quiet_NaN())), std::invalid_argument);
+  EXPECT_THROW(triangulate(base_fraction(0., number_of_points(100))), std::invalid_argument);
+  EXPECT_THROW(triangulate(base_fraction(1.5, number_of_points(100))), std::invalid_argument);
+  EXPECT_THROW(CGAL::triangulate_height_grid(dt, g.width, g.height - 1, g.heights, g.region, number_of_points(100)),
+               std::invalid_argument);
+  EXPECT_EQ(dt.number_of_vertices(), 0u);
+  triangulate(number_of_points(4, base_fraction(1.)));  // the smallest: a sample, then the corners as needed
+  EXPECT_GE(dt.number_of_vertices(), 4u);
   EXPECT_TRUE(dt.is_valid());
 }
 

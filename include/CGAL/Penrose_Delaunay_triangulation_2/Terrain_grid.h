@@ -65,6 +65,21 @@ public:
   template <class Point>
   double v(const Point& p) const { return (y1_ - to_double(p.y())) / cell_y_ - 0.5; }
 
+  // The bilinear interpolation of `heights` between the cell centres at
+  // (u, v) in cell coordinates, clamped to the outer centres.
+  template <class HeightRange>
+  double interpolate(const HeightRange& heights, double u, double v) const
+  {
+    u = (std::min)((std::max)(u, 0.), double(w_ - 1));
+    v = (std::min)((std::max)(v, 0.), double(h_ - 1));
+    const std::size_t i = (std::min)(std::size_t(u), w_ - 1), j = (std::min)(std::size_t(v), h_ - 1);
+    const std::size_t i1 = (std::min)(i + 1, w_ - 1), j1 = (std::min)(j + 1, h_ - 1);
+    const double a = u - double(i), b = v - double(j);
+    const double top = (1 - a) * double(heights[j * w_ + i]) + a * double(heights[j * w_ + i1]);
+    const double bottom = (1 - a) * double(heights[j1 * w_ + i]) + a * double(heights[j1 * w_ + i1]);
+    return (1 - b) * top + b * bottom;
+  }
+
   // Calls `span(j, i_lo, i_hi)`, i_lo <= i_hi, for each row j of the cells
   // (i, j) whose centre the triangle with vertices (u[k], v[k]) in cell
   // coordinates covers, on an edge or a vertex included. Each row's span is

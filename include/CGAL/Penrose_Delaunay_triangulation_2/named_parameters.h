@@ -22,6 +22,7 @@ enum use_correction_vectors_t { use_correction_vectors };
 enum density_upper_bound_t { density_upper_bound };
 enum max_error_t { max_error };
 enum number_of_points_t { number_of_points };
+enum base_fraction_t { base_fraction };
 } // namespace Penrose_np
 
 namespace parameters {
@@ -45,7 +46,8 @@ density_upper_bound(const Bound& b)
 }
 
 /// \ingroup PkgPenroseDelaunayTriangulation2NamedParameters
-/// The largest vertical error that `refine_terrain_by_greedy_insertion()` leaves.
+/// The largest vertical error that `refine_terrain_by_greedy_insertion()` and
+/// `triangulate_height_grid()` leave.
 inline Named_function_parameters<double, Penrose_np::max_error_t>
 max_error(double e)
 {
@@ -53,11 +55,21 @@ max_error(double e)
 }
 
 /// \ingroup PkgPenroseDelaunayTriangulation2NamedParameters
-/// The most vertices that `refine_terrain_by_greedy_insertion()` lets the triangulation have.
+/// The most vertices that `refine_terrain_by_greedy_insertion()` and
+/// `triangulate_height_grid()` let the triangulation have.
 inline Named_function_parameters<std::size_t, Penrose_np::number_of_points_t>
 number_of_points(std::size_t n)
 {
   return Named_function_parameters<std::size_t, Penrose_np::number_of_points_t>(n);
+}
+
+/// \ingroup PkgPenroseDelaunayTriangulation2NamedParameters
+/// The fraction of `number_of_points` that `triangulate_height_grid()` samples
+/// before greedy insertion.
+inline Named_function_parameters<double, Penrose_np::base_fraction_t>
+base_fraction(double f)
+{
+  return Named_function_parameters<double, Penrose_np::base_fraction_t>(f);
 }
 
 /// `max_error(e)` followed by the parameters of `np`.
@@ -74,6 +86,14 @@ Named_function_parameters<std::size_t, Penrose_np::number_of_points_t, Named_fun
 number_of_points(std::size_t n, const Named_function_parameters<T, Tag, Base>& np)
 {
   return {n, np};
+}
+
+/// `base_fraction(f)` followed by the parameters of `np`.
+template <class T, class Tag, class Base>
+Named_function_parameters<double, Penrose_np::base_fraction_t, Named_function_parameters<T, Tag, Base>>
+base_fraction(double f, const Named_function_parameters<T, Tag, Base>& np)
+{
+  return {f, np};
 }
 
 /// `use_correction_vectors(b)` followed by the parameters of `np`.
