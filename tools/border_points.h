@@ -136,6 +136,7 @@ public:
   {
     const double inward[4] = {y - region_[1], region_[2] - x, region_[3] - y, x - region_[0]};
     for(int s = 0; s < 4; ++s) {
+      if(inward[s] <= 0.) return true;  // on the border: a window's closed side
       if(!(inward[s] < border_clearance * spacing)) continue;
       const std::vector<double>& p = side_[std::size_t(s)];
       auto next = std::upper_bound(p.begin(), p.end(), s % 2 == 0 ? x : y);

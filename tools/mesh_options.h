@@ -13,6 +13,7 @@
 #include <cstdlib>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace penrose_tools {
 
@@ -23,6 +24,7 @@ inline const char* const usage_text =
   "                    [--gamma G] [--log] [--invert] [--gradient] [--height-scale S] [--viewer X Y]\n"
   "                    [--out-points FILE] [--out-mesh FILE] [--svg FILE] [--png FILE]\n"
   "                    [--reconstruct FILE] [--stats-json FILE] [--max-pixels N]\n"
+  "                    [--tiles K [--tile I J]]\n"
   "\n"
   "density:\n"
   "  --density constant|ramp|radial\n"
@@ -100,6 +102,25 @@ inline const char* const usage_text =
   "                sampled while the triangulation is derived from it: sample_seconds is the\n"
   "                sampler's preparation, triangulate_seconds the rest\n"
   "\n"
+  "tiles:\n"
+  "  --tiles K     cut the region into K x K tiles and write one mesh each,\n"
+  "                NAME_I_J.EXT for --out-mesh NAME.EXT, I from west to east and J from\n"
+  "                south to north, from 0 (1 <= K <= 1024; a tile must have 8 x 8 cells\n"
+  "                of an image or height field at least). A tile's vertices are the\n"
+  "                samples of the whole region that lie in it, points along its sides\n"
+  "                computed from each side alone (the same in the tiles that share it:\n"
+  "                the tiles meet without gaps or skirts), vertices that greedy\n"
+  "                insertion puts strictly inside it, and those that shape its\n"
+  "                triangles at the region's border (the sides shared with another\n"
+  "                tile are never split, and their triangles are not mended).\n"
+  "                --points N is for the whole region: each tile inserts greedily up\n"
+  "                to its share of N, that of its samples in the region's; --max-error\n"
+  "                E holds in each tile, but at cells centred within a hundredth of a\n"
+  "                cell of a shared side. The tiles are computed in parallel where TBB\n"
+  "                is linked, each alone: the same bytes as with --tile. Only\n"
+  "                --out-mesh applies (not --fit-heights), and the border is always on\n"
+  "  --tile I J    compute and write tile (I, J) of --tiles K only\n"
+  "\n"
   "A progress bar is drawn on stderr, when it is a terminal, for runs over a second.\n"
   "A file that cannot be read or written ends the run with status 1 and one line\n"
   "naming it and the problem; a bad option, with status 2.\n"
@@ -132,6 +153,8 @@ struct Options
   bool viewer_given = false;
   double viewer[2] = {0, 0};
   std::string out_points, out_mesh, svg, png, reconstruct, stats_json;
+  int tiles = 0;             // 0: one mesh
+  int tile[2] = {-1, -1};    // -1: every tile
   double max_pixels = double(CGAL::IO::default_max_pixels);
 };
 
@@ -149,6 +172,16 @@ inline double number(const char* s, const std::string& option)
   const double v = std::strtod(s, &end);
   if(end == s || *end != '\0' || !std::isfinite(v)) usage_error(option + " expects a number, not '" + s + "'");
   return v;
+}
+
+// A whole number from `lo` to `hi`.
+inline int whole_number(const char* s, const std::string& option, int lo, int hi)
+{
+  const double v = number(s, option);
+  if(!(v >= lo && v <= hi && v == std::floor(v)))
+    usage_error(option + " must be a whole number from " + std::to_string(lo) + " to " + std::to_string(hi)
+                + ", not '" + s + "'");
+  return int(v);
 }
 
 // The options of the command line `argv` (argv[0] the program); --help sets
@@ -191,6 +224,11 @@ inline Options parse(int argc, const char* const* argv)
     else if(a == "--reconstruct") text(o.reconstruct);
     else if(a == "--stats-json") text(o.stats_json);
     else if(a == "--max-pixels") { o.max_pixels = number(value(), a); ++i; }
+    else if(a == "--tiles") { o.tiles = whole_number(value(), a, 1, 1024); ++i; }
+    else if(a == "--tile") {
+      for(int k = 0; k < 2; ++k) o.tile[k] = whole_number(value(k + 1), a, 0, 1023);
+      i += 2;
+    }
     else usage_error("unknown option '" + a + "'");
   }
   const bool image = o.density.rfind("image:", 0) == 0, terrain = !o.terrain.empty();
@@ -227,6 +265,20 @@ inline Options parse(int argc, const char* const* argv)
   if(o.fit_heights && !terrain) usage_error("--fit-heights applies to --terrain");
   if(o.fit_heights && have_max_error) usage_error("--fit-heights and --max-error: give one (the bound is that of the interpolating mesh)");
   if(have_base_fraction && have_max_error && !have_points) usage_error("--base-fraction is a fraction of --points: give both");
+  if(o.tile[0] >= 0 && o.tiles == 0) usage_error("--tile I J needs --tiles K");
+  if(o.tile[0] >= o.tiles || o.tile[1] >= o.tiles)
+    usage_error("--tile I J must be within 0.." + std::to_string(o.tiles - 1) + " for --tiles " + std::to_string(o.tiles));
+  if(o.tiles) {
+    if(o.out_mesh.empty()) usage_error(std::string(o.tile[0] >= 0 ? "--tile" : "--tiles") + " needs --out-mesh");
+    const std::pair<const char*, const std::string*> others[] = {
+      {"--out-points", &o.out_points}, {"--svg", &o.svg}, {"--png", &o.png}, {"--reconstruct", &o.reconstruct},
+      {"--stats-json", &o.stats_json}};
+    for(const auto& [option, file] : others)
+      if(!file->empty()) usage_error(std::string(option) + " does not apply to --tiles, which writes --out-mesh only");
+    if(no_boundary) usage_error("--no-boundary does not apply to --tiles, whose sides need their border points");
+    if(o.fit_heights) usage_error("--fit-heights does not apply to --tiles: two tiles would fit their common side apart");
+    o.boundary = true;
+  }
   return o;
 }
 

@@ -3,9 +3,10 @@
 //
 // Checks the OFF meshes that penrose_mesh writes, for the command-line tests:
 //
-//   mesh_check border-angle MESH
+//   mesh_check border-angle MESH [X0 Y0 X1 Y1]
 //     prints the smallest angle, in degrees, of the triangles with a vertex on
-//     the border of the mesh's bounding box;
+//     the border of the mesh's bounding box, or on that of the rectangle
+//     X0 Y0 X1 Y1 (the region of which the mesh is a tile);
 //   mesh_check tiles K PREFIX
 //     checks the tiles PREFIX_I_J.off of `--tiles K`: each covers its
 //     rectangle (the triangles' area is that of its bounding box), the
@@ -51,9 +52,9 @@ Mesh read(const std::string& file)
   return m;
 }
 
-bool on_border(const Mesh& m, const Point& p)
+bool on_border(const std::array<double, 4>& r, const Point& p)
 {
-  return p.x() == m.x0 || p.x() == m.x1 || p.y() == m.y0 || p.y() == m.y1;
+  return p.x() == r[0] || p.y() == r[1] || p.x() == r[2] || p.y() == r[3];
 }
 
 double smallest_angle(const Point& a, const Point& b, const Point& c)
@@ -69,12 +70,12 @@ double smallest_angle(const Point& a, const Point& b, const Point& c)
   return smallest;
 }
 
-double smallest_border_angle(const Mesh& m)
+double smallest_border_angle(const Mesh& m, const std::array<double, 4>& r)
 {
   double smallest = 180.;
   for(const auto& f : m.faces) {
     const Point &a = m.points[f[0]], &b = m.points[f[1]], &c = m.points[f[2]];
-    if(on_border(m, a) || on_border(m, b) || on_border(m, c)) smallest = std::min(smallest, smallest_angle(a, b, c));
+    if(on_border(r, a) || on_border(r, b) || on_border(r, c)) smallest = std::min(smallest, smallest_angle(a, b, c));
   }
   return smallest;
 }
@@ -141,12 +142,16 @@ int main(int argc, char** argv)
 {
   try {
     const std::string command = argc > 1 ? argv[1] : "";
-    if(command == "border-angle" && argc == 3) {
-      std::cout << smallest_border_angle(read(argv[2])) << "\n";
+    if(command == "border-angle" && (argc == 3 || argc == 7)) {
+      const Mesh m = read(argv[2]);
+      std::array<double, 4> r{m.x0, m.y0, m.x1, m.y1};
+      if(argc == 7)
+        for(int k = 0; k < 4; ++k) r[std::size_t(k)] = std::atof(argv[3 + k]);
+      std::cout << smallest_border_angle(m, r) << "\n";
       return 0;
     }
     if(command == "tiles" && argc == 4) return check_tiles(std::atoi(argv[2]), argv[3]);
-    std::cerr << "usage: mesh_check border-angle MESH | tiles K PREFIX\n";
+    std::cerr << "usage: mesh_check border-angle MESH [X0 Y0 X1 Y1] | tiles K PREFIX\n";
   } catch(const std::exception& e) {
     std::cerr << "mesh_check: " << e.what() << "\n";
   }

@@ -219,18 +219,30 @@ foreach(option "" --no-boundary)
     message(FATAL_ERROR "--terrain ${option}: status ${rc}, ${border} border points: ${err}")
   endif()
 endforeach()
+# Bad values of the terrain options and of --tiles and --tile are named
+# (status 2), and no tile is written.
 foreach(c "--max-error 0|--max-error must be positive" "--max-error -1|--max-error must be positive"
           "--max-error nan|--max-error expects a number" "--base-fraction 0|--base-fraction must be in"
           "--base-fraction 1.5|--base-fraction must be in" "--boundary --no-boundary|--no-boundary, not both"
           "--max-error 1 --base-fraction 0.5|--base-fraction is a fraction of --points"
-          "--max-error 300 --fit-heights|--fit-heights and --max-error: give one")
+          "--max-error 300 --fit-heights|--fit-heights and --max-error: give one"
+          "--tiles 0|--tiles must be a whole number from 1 to 1024" "--tiles 2.5|--tiles must be a whole number"
+          "--tiles 100 --out-mesh ${WORK}/t.off|--tiles 100 makes tiles of fewer than 8 x 8 cells"
+          "--tiles 3 --tile 3 0 --out-mesh ${WORK}/t.off|--tile I J must be within 0..2 for --tiles 3"
+          "--tiles 3 --tile 0 -1 --out-mesh ${WORK}/t.off|--tile must be a whole number"
+          "--tile 0 0 --out-mesh ${WORK}/t.off|--tile I J needs --tiles K"
+          "--tiles 3 --tile 0 0|--tile needs --out-mesh" "--tiles 3|--tiles needs --out-mesh"
+          "--tiles 3 --out-mesh ${WORK}/t.off --svg ${WORK}/t.svg|--svg does not apply to --tiles"
+          "--tiles 3 --out-mesh ${WORK}/t.off --no-boundary|--no-boundary does not apply to --tiles"
+          "--tiles 3 --out-mesh ${WORK}/t.off --fit-heights|--fit-heights does not apply to --tiles")
   string(REPLACE "|" ";" c "${c}")
   list(GET c 0 options)
   list(GET c 1 why)
   separate_arguments(options)
   run_mesh(--terrain ${DATA}/terrain.png ${options})
-  if(NOT rc EQUAL 2 OR NOT err MATCHES "^penrose_mesh: [^\n]*${why}[^\n]*\n$")
-    message(FATAL_ERROR "${options}: expected status 2 and one line, got ${rc}: ${err}")
+  file(GLOB written ${WORK}/t_*)
+  if(NOT rc EQUAL 2 OR NOT err MATCHES "^penrose_mesh: [^\n]*${why}[^\n]*\n$" OR written)
+    message(FATAL_ERROR "${options}: expected status 2 and one line, got ${rc}: ${err} ${written}")
   endif()
 endforeach()
 run_mesh(--density constant --max-error 1)
