@@ -18,8 +18,11 @@
 # FRACTIONS (default "0.02 0.05") sets the vertex counts as fractions of the
 # pixels. Tools: "penrose_mesh" (--reconstruct, no density option: a sample
 # then greedy insertion), "penrose_mesh --gradient" (importance sampling of
-# the edges, for comparison), delatin at penrose_mesh's vertex count, and
-# "grid", a regular grid of about as many vertices (grid_mesh.py).
+# the edges, for comparison), "triangulate_height_grid" (the library
+# function, through the example mesh_height_grid, built if missing: a uniform
+# sample, no border points, then greedy insertion), delatin at penrose_mesh's
+# vertex count, and "grid", a regular grid of about as many vertices
+# (grid_mesh.py).
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../../.." && pwd)
@@ -27,6 +30,8 @@ build=${BUILD:-$root/build}
 out=${OUT:-$build/image_benchmark}
 fractions=${FRACTIONS:-0.02 0.05}
 source "$here/tools_setup.sh"
+example=$build/examples/Penrose_Delaunay_triangulation_2/mesh_height_grid
+[ -x "$example" ] || cmake --build "$build" --target mesh_height_grid
 
 images=("$@")
 if [ $# -eq 0 ]; then
@@ -66,6 +71,9 @@ print(c.shape[1], c.shape[0])" "$image" "$f64")
             --reconstruct "$out/${name}_penrose${density}_$n.png" --out-mesh "$mesh")
       row "$name" "penrose_mesh${density:+ $density}" "$fraction" "$t" "$mesh" "--cells${density:+ --sample}"
     done
+    mesh="$out/${name}_library_$n.off"
+    t=$(seconds "$example" image "$image" "$n" "$mesh")
+    row "$name" triangulate_height_grid "$fraction" "$t" "$mesh" --cells
     vertices=$(sed -n 2p "$out/${name}_penrose_$n.off" | cut -d' ' -f1)
     t=$(seconds node "$out/greedy_meshes.mjs" delatin "$f64" "$width" "$height" "$out/$name" vertices "$vertices")
     row "$name" delatin "$fraction" "$t" "$out/${name}_delatin_$vertices.off"
