@@ -66,10 +66,12 @@ inline const char* const usage_text =
   "                vertices, then insert, one at a time, the centre of the cell of\n"
   "                largest vertical error (greedy insertion, as in delatin) until N\n"
   "                (default 0.05; 1: samples only)\n"
-  "  --fit-heights terrain: once the mesh is made, give its vertices the heights that\n"
-  "                minimise the squared vertical error over all the cells it covers (least\n"
-  "                squares): the RMS error drops, the mesh no longer interpolates the height\n"
-  "                field, and its max error may grow. Not with --max-error, whose bound is\n"
+  "  --fit-heights terrain, or image meshed for --reconstruct: once the mesh is made,\n"
+  "                give its vertices the heights that minimise the squared vertical error\n"
+  "                over all the cells it covers (least squares); for an image, its colours,\n"
+  "                channel by channel, and its luminance (the heights of --out-mesh). The\n"
+  "                RMS error drops (the PSNR rises), the mesh no longer interpolates the\n"
+  "                grid, and its max error may grow. Not with --max-error, whose bound is\n"
   "                that of the interpolating mesh\n"
   "  --region      the rectangle sampled (default 0 0 1 1; an image or a height field is\n"
   "                stretched over it, and by default covers 0 0 WIDTH HEIGHT, or the\n"
@@ -100,7 +102,8 @@ inline const char* const usage_text =
   "                vertices, \"inserted_points\" and \"refine_seconds\" of the greedy\n"
   "                insertion; for an image \"psnr\" and \"grid_psnr\" likewise; with\n"
   "                --fit-heights \"fit_rms_error_before\", \"fit_rms_error_after\" (over the\n"
-  "                cells covered), \"fit_iterations\" and \"fit_seconds\". The tile tree is\n"
+  "                cells covered; of the luminance for an image), \"fit_iterations\" and\n"
+  "                \"fit_seconds\". The tile tree is\n"
   "                sampled while the triangulation is derived from it: sample_seconds is the\n"
   "                sampler's preparation, triangulate_seconds the rest\n"
   "\n"
@@ -265,7 +268,9 @@ inline Options parse(int argc, const char* const* argv)
   if(have_base_fraction && image && !have_max_error && !o.reconstruction_mesh)
     usage_error("--base-fraction applies to an image with --max-error, or with --reconstruct and none of --log,"
                 " --invert, --gradient and --gamma");
-  if(o.fit_heights && !terrain) usage_error("--fit-heights applies to --terrain");
+  if(o.fit_heights && !terrain && !o.reconstruction_mesh)
+    usage_error("--fit-heights applies to --terrain, and to an image with --reconstruct and none of --log,"
+                " --invert, --gradient and --gamma");
   if(o.fit_heights && have_max_error) usage_error("--fit-heights and --max-error: give one (the bound is that of the interpolating mesh)");
   if(have_base_fraction && have_max_error && !have_points) usage_error("--base-fraction is a fraction of --points: give both");
   if(o.tile[0] >= 0 && o.tiles == 0) usage_error("--tile I J needs --tiles K");

@@ -497,19 +497,45 @@ struct Quality
   Raster<double> rendering;  // of the mesh, if asked for
 };
 
-// A terrain's mesh is measured with the heights of its vertices (fitted by
-// --fit-heights), an image's with the colours under its vertices.
+// The heights of the vertices at m.points, fitted by --fit-heights or not.
+std::vector<double> heights_of(const Mesh& m)
+{
+  std::vector<double> z;
+  for(Vertex_handle v : m.vertex) z.push_back(v->point().z());
+  return z;
+}
+
+// --fit-heights on an image: the colours that --reconstruct interpolates
+// fitted by least squares, channel by channel, each lifted as the heights of
+// the vertices from the image under them; the heights are then the
+// luminance's again, for the fit of the luminance that follows. Returns the
+// colours, 3 a point of m.points.
+std::vector<double> fit_colours(Mesh& m, const Input& in)
+{
+  const Raster<float>& c = in.colours;
+  std::vector<double> fitted(3 * m.points.size()), channel(c.width * c.height);
+  auto lift = [&m](const std::function<double(double, double)>& z) {
+    for(Vertex_handle v : m.vertex) v->set_point(K::Point_3(v->point().x(), v->point().y(), z(v->point().x(), v->point().y())));
+  };
+  for(std::size_t k = 0; k < 3; ++k) {
+    for(std::size_t p = 0; p < channel.size(); ++p) channel[p] = double(c.values[3 * p + k]);
+    lift([&](double x, double y) { return c(x, y, k); });
+    CGAL::fit_terrain_heights(m.t, c.width, c.height, channel, CGAL::Bbox_2(c.x0, c.y0, c.x1, c.y1));
+    for(std::size_t i = 0; i < m.points.size(); ++i) fitted[3 * i + k] = m.vertex[i]->point().z();
+  }
+  lift([&](double x, double y) { return in.intensity(x, y); });
+  return fitted;
+}
+
+// The mesh against `image`, interpolating `at_vertex` (image.channels values
+// a point of m.points); empty: the image under the vertices.
 template <class T>
-Quality measure(const Mesh& m, const Raster<T>& image, bool with_heights, bool render)
+Quality measure(const Mesh& m, const Raster<T>& image, std::vector<double> at_vertex, bool render)
 {
   Quality q;
   std::vector<char> covered, grid_covered;
   const penrose_tools::Plane_mesh mesh = plane_mesh(m);
-  std::vector<double> at_vertex;
-  if(with_heights)
-    for(Vertex_handle v : m.vertex) at_vertex.push_back(v->point().z());
-  else
-    at_vertex = sample(mesh, image);
+  if(at_vertex.empty()) at_vertex = sample(mesh, image);
   std::tie(q.max_error, q.rms_error) = compare(mesh, at_vertex, image, covered, nullptr, render ? &q.rendering : nullptr);
   const penrose_tools::Plane_mesh grid = penrose_tools::grid_mesh(image, m.t.number_of_vertices());
   q.grid_vertices = grid.x.size();
@@ -795,6 +821,8 @@ void run(Options o)
   time.refine = seconds_since(t0);
   t0 = std::chrono::steady_clock::now();
   CGAL::Terrain_fit_result fitted;
+  std::vector<double> colours;  // fitted, 3 a point; empty: the image's under them
+  if(o.fit_heights && !in.colours.values.empty()) colours = fit_colours(m, in);
   if(o.fit_heights)
     fitted = CGAL::fit_terrain_heights(m.t, heights.width, heights.height, heights.values,
                                        CGAL::Bbox_2(heights.x0, heights.y0, heights.x1, heights.y1));
@@ -804,8 +832,8 @@ void run(Options o)
   t0 = std::chrono::steady_clock::now();
   std::unique_ptr<Quality> q;
   if(!o.stats_json.empty() || !o.reconstruct.empty()) {
-    if(!in.heights.values.empty()) q = std::make_unique<Quality>(measure(m, in.heights, true, false));
-    else if(!in.colours.values.empty()) q = std::make_unique<Quality>(measure(m, in.colours, false, !o.reconstruct.empty()));
+    if(!in.heights.values.empty()) q = std::make_unique<Quality>(measure(m, in.heights, heights_of(m), false));
+    else if(!in.colours.values.empty()) q = std::make_unique<Quality>(measure(m, in.colours, colours, !o.reconstruct.empty()));
   }
   time.measure = seconds_since(t0);
 

@@ -17,7 +17,9 @@
 # log10(rms)) and image_psnr.png, PSNR against vertices for each tool.
 # FRACTIONS (default "0.02 0.05") sets the vertex counts as fractions of the
 # pixels. Tools: "penrose_mesh" (--reconstruct, no density option: a sample
-# then greedy insertion), "penrose_mesh --gradient" (importance sampling of
+# then greedy insertion), "penrose_mesh --fit-heights" (the same, the
+# luminance at the vertices fitted by least squares: no longer interpolating
+# the image), "penrose_mesh --gradient" (importance sampling of
 # the edges, for comparison), "triangulate_height_grid" (the library
 # function, through the example mesh_height_grid, built if missing: a uniform
 # sample, no border points, then greedy insertion), delatin at penrose_mesh's
@@ -65,11 +67,13 @@ c = mi.imread(sys.argv[1])[:, :, :3].astype(np.float64)
 print(c.shape[1], c.shape[0])" "$image" "$f64")
   for fraction in $fractions; do
     n=$("$python" -c "import sys; print(round(float(sys.argv[1]) * int(sys.argv[2]) * int(sys.argv[3])))" "$fraction" "$width" "$height")
-    for density in "" --gradient; do
-      mesh="$out/${name}_penrose${density}_$n.off"
-      t=$(seconds "$build/tools/penrose_mesh" --density "image:$image" $density --points "$n" \
-            --reconstruct "$out/${name}_penrose${density}_$n.png" --out-mesh "$mesh")
-      row "$name" "penrose_mesh${density:+ $density}" "$fraction" "$t" "$mesh" "--cells${density:+ --sample}"
+    for option in "" --fit-heights --gradient; do
+      mesh="$out/${name}_penrose${option}_$n.off"
+      t=$(seconds "$build/tools/penrose_mesh" --density "image:$image" $option --points "$n" \
+            --reconstruct "$out/${name}_penrose${option}_$n.png" --out-mesh "$mesh")
+      sample=
+      [ "$option" = --gradient ] && sample=" --sample"
+      row "$name" "penrose_mesh${option:+ $option}" "$fraction" "$t" "$mesh" "--cells$sample"
     done
     mesh="$out/${name}_library_$n.off"
     t=$(seconds "$example" image "$image" "$n" "$mesh")
