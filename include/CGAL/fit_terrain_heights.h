@@ -243,6 +243,8 @@ fit, and the iterations taken.
 \throws std::invalid_argument if the grid is empty or its size does not
 match `heights`, a height is NaN or infinite, or `region` is empty or not
 finite. The triangulation is then left unchanged.
+
+\sa `triangulate_height_grid()`, `refine_terrain_by_greedy_insertion()`
 */
 template <class DT, class HeightRange>
 Terrain_fit_result fit_terrain_heights(DT& dt, std::size_t width, std::size_t height, const HeightRange& heights,

@@ -248,6 +248,8 @@ stopped the refinement.
 match `heights`, a height is NaN or infinite, `region` is empty or not
 finite, or `max_error` is negative or NaN. The triangulation is then left
 unchanged. What `dt.insert()` and the visitor throw passes through.
+
+\sa `triangulate_height_grid()`, `fit_terrain_heights()`
 */
 template <class DT, class HeightRange, class NamedParameters = parameters::Default_named_parameters>
 Terrain_refinement_result refine_terrain_by_greedy_insertion(DT& dt, std::size_t width, std::size_t height,

@@ -76,6 +76,8 @@ match `heights`, a height is NaN or infinite, `region` is empty or not
 finite, neither `number_of_points` nor `max_error` is given, or one of the
 named parameters is out of its range. What the sampler, `dt.build()`,
 `dt.insert()` and the visitor throw passes through.
+
+\sa `refine_terrain_by_greedy_insertion()`, `fit_terrain_heights()`
 */
 template <class PDT, class HeightRange, class NamedParameters>
 Terrain_refinement_result triangulate_height_grid(PDT& dt, std::size_t width, std::size_t height,
