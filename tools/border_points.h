@@ -106,6 +106,55 @@ public:
     }
   }
 
+  /*
+  Adds points to the sides where the linear interpolation of `height(x, y)`
+  between their points misses it by more than `max_error` at one of the
+  abscissas (bottom and top sides) or ordinates (right and left) `at[0]` or
+  `at[1]`, sorted: the worst of a side's edge first, then again on either
+  half (greedy insertion along the side, as that of a terrain's cells). `at`
+  depends on the region alone (the centres of a raster's cells), so that two
+  tiles that share a side find the same points there.
+  */
+  template <class Height>
+  void fit(const Height& height, double max_error, const std::array<std::vector<double>, 2>& at)
+  {
+    for(int s = 0; s < 4; ++s) {
+      const std::vector<double>& t = at[std::size_t(s % 2)];
+      const double across = s == 0 ? region_[1] : s == 1 ? region_[2] : s == 2 ? region_[3] : region_[0];
+      auto h = [&](double along) { return s % 2 == 0 ? height(along, across) : height(across, along); };
+      std::vector<double>& p = side_[std::size_t(s)];
+      const auto first = std::upper_bound(t.begin(), t.end(), p.front());
+      const auto last = std::lower_bound(first, t.end(), p.back());
+      std::vector<double> heights;  // at t in (p.front(), p.back())
+      for(auto u = first; u != last; ++u) heights.push_back(h(*u));
+      std::vector<double> fitted{p.front()};
+      // the edges still to fit, as pairs of positions, the next one last
+      std::vector<std::pair<double, double>> todo;
+      for(std::size_t k = p.size() - 1; k > 0; --k) todo.emplace_back(p[k - 1], p[k]);
+      while(!todo.empty()) {
+        const auto [a, b] = todo.back();
+        todo.pop_back();
+        const double ha = h(a), hb = h(b);
+        double worst = max_error;
+        auto split = last;
+        for(auto u = std::upper_bound(first, last, a); u != last && *u < b; ++u) {
+          const double e = std::abs(heights[std::size_t(u - first)] - (ha + (hb - ha) * (*u - a) / (b - a)));
+          if(e > worst) {
+            worst = e;
+            split = u;
+          }
+        }
+        if(split == last) {
+          fitted.push_back(b);
+          continue;
+        }
+        todo.emplace_back(*split, b);
+        todo.emplace_back(a, *split);
+      }
+      p.swap(fitted);
+    }
+  }
+
   // Calls `add(x, y)` for the four corners, then for the points inside the
   // bottom, right, top and left sides.
   template <class Add>

@@ -271,11 +271,22 @@ struct Piece
 };
 
 // Removes the samples too close to the border, then inserts the points
-// along it (see border_points.h) with insert().
+// along it (see border_points.h) with insert(); with --max-error, as many
+// more as the heights along the border need to be within it (without, the
+// border points of a tile's side are as sparse as the sample, and greedy
+// insertion's vertices beside it make slivers with them that its tiles may
+// not mend).
 template <class Lift>
-std::size_t add_boundary(Mesh& m, const Piece& piece, const Density& d, double scale, const Lift& lift)
+std::size_t add_boundary(Mesh& m, const Options& o, const Piece& piece, const Density& d, double scale,
+                         const Raster<double>& heights, const Lift& lift)
 {
-  const penrose_tools::Border border(piece.rect, [&](double x, double y) { return scale * d.value(Point(x, y)); });
+  penrose_tools::Border border(piece.rect, [&](double x, double y) { return scale * d.value(Point(x, y)); });
+  if(o.max_error > 0. && !heights.values.empty()) {
+    std::array<std::vector<double>, 2> centres;
+    for(std::size_t i = 0; i < heights.width; ++i) centres[0].push_back(heights.x(double(i) + 0.5));
+    for(std::size_t j = heights.height; j-- > 0;) centres[1].push_back(heights.y(double(j) + 0.5));
+    border.fit([&](double x, double y) { return lift(x, y).z(); }, o.max_error, centres);
+  }
   penrose_tools::remove_samples_near_border(m.t, m.vertex, border);
   std::vector<Vertex_handle> kept;
   kept.swap(m.vertex);
@@ -376,10 +387,10 @@ std::size_t refine_border(Mesh& m, const Options& o, const Piece& piece, const R
 // and the border's refinement, as run() does for the whole region.
 template <class Lift>
 Mesh tile_mesh(const Options& o, const Sampler& sampler, const Density& d, const Raster<double>& heights,
-               const Plan& plan, int i, int j, const Lift& lift)
+               const std::array<std::size_t, 2>& cells_xy, const Plan& plan, int i, int j, const Lift& lift)
 {
   const std::array<double, 4> region{o.region[0], o.region[1], o.region[2], o.region[3]};
-  const Piece piece{penrose_tools::tile_rectangle(region, i, j, o.tiles),
+  const Piece piece{penrose_tools::tile_rectangle(region, i, j, o.tiles, cells_xy),
                     penrose_tools::sides_on_region_border(i, j, o.tiles)};
   std::vector<Point> samples;
   sampler(K::Iso_rectangle_2(piece.rect[0], piece.rect[1], piece.rect[2], piece.rect[3]), std::back_inserter(samples));
@@ -390,7 +401,7 @@ Mesh tile_mesh(const Options& o, const Sampler& sampler, const Density& d, const
     m.add(v);
     hint = v->face();
   }
-  add_boundary(m, piece, d, plan.border_scale, lift);
+  add_boundary(m, o, piece, d, plan.border_scale, heights, lift);
   const Raster<double> cells = plan.greedy ? penrose_tools::cells_inside(heights, piece.rect) : Raster<double>();
   std::size_t budget = plan.budget;
   if(plan.bounded())
@@ -405,10 +416,12 @@ Mesh tile_mesh(const Options& o, const Sampler& sampler, const Density& d, const
 
 // Writes the meshes of --tiles, or of --tile alone, each computed alone (by
 // tile_mesh()), in parallel where TBB is linked; returns the number of
-// vertices and of triangles of all.
+// vertices and of triangles of all. `cells_xy` is the size of the input
+// raster ({0, 0} for a built-in density).
 template <class Lift>
 std::pair<std::size_t, std::size_t> write_tiles(const Options& o, const Sampler& sampler, const Density& d,
-                                                const Raster<double>& heights, const Plan& plan, const Lift& lift)
+                                                const Raster<double>& heights, const std::array<std::size_t, 2>& cells_xy,
+                                                const Plan& plan, const Lift& lift)
 {
   std::vector<std::array<int, 2>> tiles;
   for(int j = 0; j < o.tiles; ++j)
@@ -417,7 +430,7 @@ std::pair<std::size_t, std::size_t> write_tiles(const Options& o, const Sampler&
   std::vector<std::pair<std::size_t, std::size_t>> sizes(tiles.size());
   auto one = [&](std::size_t k) {
     const auto [i, j] = tiles[k];
-    const Mesh m = tile_mesh(o, sampler, d, heights, plan, i, j, lift);
+    const Mesh m = tile_mesh(o, sampler, d, heights, cells_xy, plan, i, j, lift);
     CGAL::IO::write_triangulation(penrose_tools::tile_file_name(o.out_mesh, i, j), m.t, m.vertex);
     sizes[k] = {m.t.number_of_vertices(), m.t.number_of_faces()};
   };
@@ -793,7 +806,7 @@ void run(Options o)
 
   if(o.tiles) {
     bar.stage("tiles", 0.2, 1.);
-    const auto [vertices, faces] = in_context(o, [&] { return write_tiles(o, *sampler, d, heights, plan, lift); });
+    const auto [vertices, faces] = in_context(o, [&] { return write_tiles(o, *sampler, d, heights, {cells_x, cells_y}, plan, lift); });
     bar.finish();
     std::cerr << "penrose_mesh: ";
     if(o.tile[0] < 0) std::cerr << o.tiles << " x " << o.tiles << " tiles";
@@ -808,7 +821,7 @@ void run(Options o)
   Mesh m;
   in_context(o, [&] { triangulate(m, *sampler, lift, bar); });
   const Piece whole{{o.region[0], o.region[1], o.region[2], o.region[3]}, {true, true, true, true}};
-  const std::size_t boundary = o.boundary ? add_boundary(m, whole, d, plan.border_scale, lift) : 0;
+  const std::size_t boundary = o.boundary ? add_boundary(m, o, whole, d, plan.border_scale, heights, lift) : 0;
   const std::size_t sampled = m.points.size() - boundary;  // those kept
   time.triangulate = seconds_since(t0);
 

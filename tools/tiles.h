@@ -13,23 +13,34 @@
 #include "raster_maps.h"
 
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <string>
 
 namespace penrose_tools {
 
-// Boundary k of the K + 1 that cut [a, b] into K equal parts.
-inline double tile_boundary(double a, double b, int k, int K)
+// Boundary k of the K + 1 that cut [a, b] into K parts: equal ones, or, if
+// [a, b] spans `cells` cells of a raster, on the nearest boundary between
+// cells, so that no cell centre lies on a side shared by two tiles (nor
+// closer to it than half a cell, where greedy insertion would put a vertex
+// making slivers with the side's points).
+inline double tile_boundary(double a, double b, int k, int K, std::size_t cells)
 {
-  return k == K ? b : a + (b - a) * double(k) / double(K);
+  if(k == K) return b;
+  const double t = cells ? double(std::llround(double(cells) * double(k) / double(K))) / double(cells)
+                         : double(k) / double(K);
+  return a + (b - a) * t;
 }
 
 // Tile (i, j) of the K x K tiles of region = {x0, y0, x1, y1}, i from west to
-// east and j from south to north, as {x0, y0, x1, y1}.
-inline std::array<double, 4> tile_rectangle(const std::array<double, 4>& region, int i, int j, int K)
+// east and j from south to north, as {x0, y0, x1, y1}; `cells` is the size
+// of the raster over the region, if any ({0, 0} otherwise).
+inline std::array<double, 4> tile_rectangle(const std::array<double, 4>& region, int i, int j, int K,
+                                            const std::array<std::size_t, 2>& cells)
 {
-  return {tile_boundary(region[0], region[2], i, K), tile_boundary(region[1], region[3], j, K),
-          tile_boundary(region[0], region[2], i + 1, K), tile_boundary(region[1], region[3], j + 1, K)};
+  return {tile_boundary(region[0], region[2], i, K, cells[0]), tile_boundary(region[1], region[3], j, K, cells[1]),
+          tile_boundary(region[0], region[2], i + 1, K, cells[0]),
+          tile_boundary(region[1], region[3], j + 1, K, cells[1])};
 }
 
 // Which sides of tile (i, j) lie on the region's border, in the order
@@ -53,8 +64,8 @@ its sides at least, as a raster of their own over their cells' union.
 Greedy insertion on it puts vertices only strictly inside the tile, so that
 nothing new lands on a side shared with a neighbour; the margin keeps the
 centres that it computes from its own corners (which round differently)
-inside too. A cell whose centre is on a shared side is refined by neither
-tile. Empty if no cell is inside.
+inside too. Tiles whose sides lie between cells (see tile_boundary()) share
+out all the cells. Empty if no cell is inside.
 */
 template <class T>
 Raster<T> cells_inside(const Raster<T>& r, const std::array<double, 4>& rect)
