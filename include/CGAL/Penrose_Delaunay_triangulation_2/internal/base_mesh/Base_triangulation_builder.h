@@ -26,12 +26,15 @@
 // survey) is apart from the mesh. With Sequential_tag each tile is surveyed
 // as its vertices are made. With Parallel_tag a level's tiles are surveyed
 // in TBB tasks, those of the next level while the calling thread links this
-// level's triangles, and the last level's triangles are made in two halves.
+// level's triangles, and the last level's triangles are made in two halves;
+// a task faults in the pages of the mesh's arrays ahead of the calling
+// thread (Page_population.h).
 
 #ifndef CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_BASE_TRIANGULATION_BUILDER_H
 #define CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_BASE_TRIANGULATION_BUILDER_H
 
 #include <CGAL/Penrose_Delaunay_triangulation_2/internal/parallel/Concurrency.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/internal/parallel/Page_population.h>
 #include <CGAL/Penrose_Delaunay_triangulation_2/internal/flat_mesh/Flat_mesh.h>
 #include <CGAL/Penrose_Delaunay_triangulation_2/internal/tiling/Sampling_context.h>
 #include <CGAL/Penrose_Delaunay_triangulation_2/internal/tiling/Tile_subdivision.h>
@@ -115,6 +118,14 @@ public:
     // grandparents, in pages already faulted in.
     frontier_.reserve(n); next_.reserve(n); work_.reserve(n);
     if(surveyed_apart) surveys_.reserve(n);
+    // about as many vertices as points, and twice as many faces, will be written
+    const std::size_t vertices = std::size_t(expected_points);
+    const Pages_populated_beside<ConcurrencyTag> populated({first_elements(m_.points, vertices),
+                                                            first_elements(m_.vertex_face, vertices),
+                                                            first_elements(importance_, vertices),
+                                                            first_elements(target_, vertices),
+                                                            first_elements(m_.faces, 2 * vertices),
+                                                            first_elements(m_.face_alive, 2 * vertices)});
     for(int i = 0; i < 3; ++i) add_vertex(c_.root_x(i), c_.root_y(i), c_.importance(c_.root_x(i), c_.root_y(i)));
     frontier_base_ = m_.create_face(0, 1, 2);
     const Tile root(root_label(), {{0, 1, 2}});
