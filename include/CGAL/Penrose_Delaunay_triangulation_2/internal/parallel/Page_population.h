@@ -59,8 +59,10 @@ inline void populate_for_writing(const Byte_range& r)
 }
 
 // With Parallel_tag, faults in the pages of `ranges` in a task, from their
-// beginnings on, in step, as arrays filled side by side are; waits for it
-// when destroyed. With Sequential_tag, does nothing.
+// beginnings on, in step, as arrays filled side by side are; when destroyed,
+// stops it and waits for it: on a busy machine, where the task may start
+// late or never, the calling thread has faulted the pages in by then. With
+// Sequential_tag, does nothing.
 template <class ConcurrencyTag>
 class Pages_populated_beside
 {
@@ -71,7 +73,7 @@ public:
     if constexpr(is_parallel<ConcurrencyTag>) {
       group_.run(task([ranges] {
         constexpr std::size_t steps = 64;
-        for(std::size_t s = 0; s < steps; ++s)
+        for(std::size_t s = 0; s < steps && !tbb::is_current_task_group_canceling(); ++s)
           for(const Byte_range& r : ranges) {
             const std::size_t from = r.bytes / steps * s, to = s + 1 == steps ? r.bytes : r.bytes / steps * (s + 1);
             populate_for_writing({static_cast<const char*>(r.begin) + from, to - from});
@@ -91,6 +93,7 @@ public:
     if constexpr(is_parallel<ConcurrencyTag>) {
       [[maybe_unused]] const Tasks_ended ended;
       try {
+        group_.cancel();
         group_.wait();
       } catch(...) {  // the task only gives advice: nothing of it can matter
       }
