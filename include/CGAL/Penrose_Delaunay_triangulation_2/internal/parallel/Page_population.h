@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <type_traits>
 #include <vector>
 
 #if defined(__linux__)
@@ -103,7 +104,8 @@ public:
 
 private:
 #if defined(CGAL_LINKED_WITH_TBB)
-  tbb::task_group group_;
+  // none with Sequential_tag
+  std::conditional_t<is_parallel<ConcurrencyTag>, tbb::task_group, char> group_;
 #endif
 };
 
