@@ -92,6 +92,11 @@ public:
     std::uint64_t threshold;    ///< Fibonacci value of the F-code
     unsigned structural_index;  ///< column of the correction table
     unsigned importance_index;  ///< row of the correction table
+    /// A 64-bit name of the sample, unique among the samples of the
+    /// sampler and the same in every traversal, window or process: its
+    /// birth tile's level and F-code. `Penrose_Delaunay_window_2` names
+    /// vertices with it.
+    std::uint64_t key;
   };
   /// @}
 
@@ -120,6 +125,11 @@ public:
       \cgalParamDescription{a factor applied to the density (after `number_of_output_points`)}
       \cgalParamType{`double`}
       \cgalParamDefault{`1`}
+    \cgalParamNEnd
+    \cgalParamNBegin{density_integral}
+      \cgalParamDescription{the integral of the unscaled density over the region, as `density_integral()` of a sampler of the same region and density returned it: the density is then not integrated, and the points are those of that sampler, bit for bit. A worker that samples or triangulates one window of a large region builds its sampler so, reading the density only near its window and the tile tree's ancestors}
+      \cgalParamType{`double`, finite and non-negative}
+      \cgalParamDefault{the integral measured on the density}
     \cgalParamNEnd
     \cgalParamNBegin{maximum_number}
       \cgalParamDescription{the largest expected number of points accepted; a larger request throws `std::length_error` before anything is allocated}
@@ -189,8 +199,14 @@ public:
 
     // The integral is measured on the density alone, with the checks of the
     // sampler, before anything large is allocated.
-    internal::Penrose::Sampling_context probe(x0, y0, x1, y1, density_xy, nullptr, 1., nullptr);
-    integral_ = integrate(probe, x0, y0, x1, y1);
+    if constexpr(is_default_parameter<NamedParameters, Penrose_np::density_integral_t>::value) {
+      internal::Penrose::Sampling_context probe(x0, y0, x1, y1, density_xy, nullptr, 1., nullptr);
+      integral_ = integrate(probe, x0, y0, x1, y1);
+    } else {
+      integral_ = get_parameter(np, Penrose_np::density_integral);
+      if(!(integral_ >= 0.))
+        throw std::invalid_argument("Penrose_importance_sampler: density_integral must be finite and non-negative");
+    }
     if(!(integral_ < std::numeric_limits<double>::infinity()))
       throw std::invalid_argument("Penrose_importance_sampler: the integral of the density over the region overflows "
                                   "the doubles; scale the density down");
@@ -309,7 +325,7 @@ private:
     return Sample{ construct_point(FT(s.x), FT(s.y)),
                    construct_point(FT(s.reference_x), FT(s.reference_y)),
                    s.importance, s.leaf_level, s.leaf_code, s.threshold,
-                   s.structural_index, s.importance_index };
+                   s.structural_index, s.importance_index, s.key };
   }
 
   template <class F>

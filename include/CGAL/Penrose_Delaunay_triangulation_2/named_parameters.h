@@ -23,6 +23,8 @@ enum density_upper_bound_t { density_upper_bound };
 enum max_error_t { max_error };
 enum number_of_points_t { number_of_points };
 enum base_fraction_t { base_fraction };
+enum density_integral_t { density_integral };
+enum window_margin_t { window_margin };
 } // namespace Penrose_np
 
 namespace parameters {
@@ -70,6 +72,36 @@ inline Named_function_parameters<double, Penrose_np::base_fraction_t>
 base_fraction(double f)
 {
   return Named_function_parameters<double, Penrose_np::base_fraction_t>(f);
+}
+
+/// \ingroup PkgPenroseDelaunayTriangulation2NamedParameters
+/// The integral of the unscaled density over the region, as
+/// `Penrose_importance_sampler::density_integral()` gave it: the sampler
+/// then does not integrate the density, and makes the same points as the
+/// sampler that measured it, which lets a worker build the sampler of a
+/// window without reading the density far from it.
+inline Named_function_parameters<double, Penrose_np::density_integral_t>
+density_integral(double i)
+{
+  return Named_function_parameters<double, Penrose_np::density_integral_t>(i);
+}
+
+/// \ingroup PkgPenroseDelaunayTriangulation2NamedParameters
+/// The first margin that `Penrose_Delaunay_window_2` grows its window by,
+/// in units of the region's coordinates; it is doubled until the window's
+/// triangles are certified.
+inline Named_function_parameters<double, Penrose_np::window_margin_t>
+window_margin(double m)
+{
+  return Named_function_parameters<double, Penrose_np::window_margin_t>(m);
+}
+
+/// `density_integral(i)` followed by the parameters of `np`.
+template <class T, class Tag, class Base>
+Named_function_parameters<double, Penrose_np::density_integral_t, Named_function_parameters<T, Tag, Base>>
+density_integral(double i, const Named_function_parameters<T, Tag, Base>& np)
+{
+  return {i, np};
 }
 
 /// `max_error(e)` followed by the parameters of `np`.

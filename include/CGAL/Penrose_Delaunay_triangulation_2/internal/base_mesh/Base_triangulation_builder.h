@@ -70,7 +70,16 @@ public:
   // `memory`: the bytes that the mesh may take (0: not checked).
   Base_triangulation_builder(const Sampling_context& context, Flat_mesh& mesh, bool record_births = false,
                              double memory = physical_memory_bytes())
-    : c_(context), m_(mesh), record_births_(record_births), memory_(memory)
+    : Base_triangulation_builder(context, context.region_window(), mesh, record_births, memory)
+  {}
+
+  // The same for the samples of `window` only: a tile is subdivided only if
+  // a sample of its subtree can land there, and a sample is kept only if it
+  // does, so that the mesh is made Delaunay on the region's samples in the
+  // window, and a few corners of tiles around it, not samples, to remove.
+  Base_triangulation_builder(const Sampling_context& context, const Sample_window& window, Flat_mesh& mesh,
+                             bool record_births = false, double memory = physical_memory_bytes())
+    : c_(context), window_(window), m_(mesh), record_births_(record_births), memory_(memory)
   {}
 
   // Where each vertex of the mesh goes: its corrected position if it is an
@@ -131,7 +140,7 @@ public:
     const Tile root(root_label(), {{0, 1, 2}});
     double rx[3], ry[3];
     for(int i = 0; i < 3; ++i) { rx[i] = m_.points[i].x(); ry[i] = m_.points[i].y(); }
-    if(c_.should_refine(0, 0, rx, ry, importance_.data())) frontier_.push_back(root);
+    if(!window_.is_empty() && c_.should_refine(0, 0, rx, ry, importance_.data(), window_)) frontier_.push_back(root);
     // about 1.5 tiles are subdivided per point (1.26 to 1.59 for the constant
     // density and the ramp from 10^5 to 4 x 10^6)
     const double expected_tiles = 1.5 * expected_points + 1.;
@@ -148,7 +157,7 @@ public:
                       [this](const Tile& t) { if(!surveyed_apart) fetch_corners(t, corners()); },
                       [this, level](std::size_t k) {
                         if constexpr(surveyed_apart) create_vertices(k, level, surveys_[k]);
-                        else create_vertices(k, level, survey(c_, frontier_[k], level, corners()));
+                        else create_vertices(k, level, survey(c_, window_, frontier_[k], level, corners()));
                       });
       if(completed) {
         next_base_ = m_.append_faces(next_.size());
@@ -267,10 +276,11 @@ private:
     Survey* s = surveys_.data();
     const Corners corners = this->corners();
     const Sampling_context* context = &c_;
+    const Sample_window* window = &window_;
     for_each_block<ConcurrencyTag>(tiles.size(), survey_grain, [=](std::size_t b, std::size_t e) {
       for(std::size_t k = b; k < e; ++k) {
         if(k + ahead < e) fetch_corners(t[k + ahead], corners);
-        s[k] = survey(*context, t[k], level, corners);
+        s[k] = survey(*context, *window, t[k], level, corners);
       }
     });
   }
@@ -296,8 +306,8 @@ private:
     }
   }
 
-  CGAL_PENROSE_HOT_INLINE static Survey survey(const Sampling_context& context, const Tile& t, int level,
-                                               const Corners& d)
+  CGAL_PENROSE_HOT_INLINE static Survey survey(const Sampling_context& context, const Sample_window& window,
+                                               const Tile& t, int level, const Corners& d)
   {
     const Subdivision_rule& r = rule(t.tile_type());
     const int child_level = level + 1;
@@ -314,7 +324,7 @@ private:
       Placed_sample p;
       if(r.new_vertices[n].is_sample
          && context.activate(vx[3 + n], vy[3 + n], vi[3 + n], sample_birth(t.label(), r, child_level), p)
-         && context.contains(p.x, p.y)) {
+         && window.contains(p.x, p.y)) {
         s.kept = true;
         s.target_x = p.x; s.target_y = p.y;
       }
@@ -326,7 +336,7 @@ private:
         const int j = cr.corners[i];
         cx[i] = vx[j]; cy[i] = vy[j]; ci[i] = vi[j];
       }
-      if(context.should_refine(child_level, child_threshold(t.threshold, cr, child_level), cx, cy, ci))
+      if(context.should_refine(child_level, child_threshold(t.threshold, cr, child_level), cx, cy, ci, window))
         s.refined_children |= 1u << c;
     }
     return s;
@@ -749,6 +759,7 @@ private:
   }
 
   const Sampling_context& c_;
+  const Sample_window window_;
   Flat_mesh& m_;
   const bool record_births_;
   const double memory_;

@@ -46,6 +46,7 @@ struct Placed_sample
   double importance;
   std::uint64_t threshold;
   std::uint64_t leaf_code;
+  std::uint64_t key;       // sample_key() of its birth
   int leaf_level;
   std::uint8_t leaf_direction;
   unsigned structural_index;
@@ -233,6 +234,7 @@ public:
     s.threshold = b.threshold;
     s.leaf_level = leaf;
     s.leaf_code = b.code << (2 * shift);
+    s.key = sample_key(b);
     s.leaf_direction = static_cast<std::uint8_t>((b.direction + 10 * shift) % 20);
     s.structural_index = structural_index_[s.leaf_code & (structural_index_.size() - 1)];
     s.importance_index = importance_bins_(importance);

@@ -51,6 +51,16 @@ inline std::uint64_t child_threshold(std::uint64_t threshold, const Child_rule& 
   return threshold + pair_weight(cr.code_pair, child_level);
 }
 
+// A name of the sample born with `b`, the same in every traversal: tile
+// codes are unique within a level (two bits a level, distinct among
+// siblings) and a tile bears at most one sample, so that the birth level and
+// code tell samples apart; the level is the leading bit above the code's
+// 2 level bits (level <= 31: below 2^63).
+inline std::uint64_t sample_key(const Sample_birth& b)
+{
+  return (std::uint64_t(1) << (2 * b.level)) + b.code;
+}
+
 // The label of child `cr` of a tile labelled `t`, at level `child_level`.
 inline Tile_label child_label(const Tile_label& t, const Child_rule& cr, int child_level)
 {
