@@ -9,7 +9,9 @@
 #include "../tools/border_refinement.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Penrose_Delaunay_border_2.h>
 #include <CGAL/Penrose_Delaunay_triangulation_2.h>
+#include <CGAL/Penrose_Delaunay_window_2.h>
 #include <CGAL/Penrose_importance_sampler.h>
 #include <CGAL/Raster_density_2.h>
 #include <CGAL/Triangulation_face_base_with_info_2.h>
@@ -64,6 +66,7 @@ struct Request
   bool correction = true;
   std::optional<std::array<double, 4>> window;  // the part of the region sampled, if not all of it
   long long threads = 1;                         // 1: Sequential_tag; 0: as many as TBB allows
+  std::optional<double> integral;                // of the density over the region, if known
 };
 
 void check_rectangle(const char* name, const std::array<double, 4>& r)
@@ -94,18 +97,28 @@ py::array_t<T> to_numpy(std::vector<T>&& v, std::size_t rows, std::size_t column
   return py::array_t<T>({rows, columns}, owner->data(), free_when_done);
 }
 
+template <class NamedParameters>
+std::unique_ptr<Sampler> make_sampler_with(const Rectangle& region, const Density& d, const NamedParameters& np)
+{
+  using CGAL::parameters::density_upper_bound;
+  if(d.upper_bound) return std::make_unique<Sampler>(region, d.value, density_upper_bound(d.upper_bound, np));
+  return std::make_unique<Sampler>(region, d.value, np);
+}
+
+template <class NamedParameters>
+std::unique_ptr<Sampler> make_sampler_integrated(const Request& r, const Density& d, const NamedParameters& np)
+{
+  const Rectangle region(r.region[0], r.region[1], r.region[2], r.region[3]);
+  if(r.integral) return make_sampler_with(region, d, CGAL::parameters::density_integral(*r.integral, np));
+  return make_sampler_with(region, d, np);
+}
+
 std::unique_ptr<Sampler> make_sampler(const Request& r, const Density& d)
 {
   using namespace CGAL::parameters;
-  const Rectangle region(r.region[0], r.region[1], r.region[2], r.region[3]);
   const auto np = use_correction_vectors(r.correction).density_control_factor(r.scale);
-  if(r.n) {
-    const auto counted = np.number_of_output_points(*r.n);
-    if(d.upper_bound) return std::make_unique<Sampler>(region, d.value, density_upper_bound(d.upper_bound, counted));
-    return std::make_unique<Sampler>(region, d.value, counted);
-  }
-  if(d.upper_bound) return std::make_unique<Sampler>(region, d.value, density_upper_bound(d.upper_bound, np));
-  return std::make_unique<Sampler>(region, d.value, np);
+  if(r.n) return make_sampler_integrated(r, d, np.number_of_output_points(*r.n));
+  return make_sampler_integrated(r, d, np);
 }
 
 // The samples, x and y interleaved.
@@ -391,9 +404,97 @@ py::tuple triangulate(const py::object& density, const std::optional<std::array<
   return py::make_tuple(points, simplices, to_numpy(std::move(m.neighbors), faces, 3));
 }
 
+// A window's part of the triangulation (see Penrose_Delaunay_window_2) and,
+// where asked, the border's (Penrose_Delaunay_border_2): the samples in the
+// window by key, their keys, the triangles as key triples, and the other
+// vertices of those triangles by key.
+struct Piece
+{
+  std::vector<double> xy;
+  std::vector<std::uint64_t> keys;
+  std::vector<std::uint64_t> triangles;
+  std::vector<double> foreign_xy;
+  std::vector<std::uint64_t> foreign_keys;
+  std::vector<std::uint64_t> hull;
+};
+
+template <class Pairs>
+void add_foreign(Piece& p, const Pairs& vertices)
+{
+  for(const auto& [k, q] : vertices) {
+    p.foreign_keys.push_back(k);
+    p.foreign_xy.push_back(q.x());
+    p.foreign_xy.push_back(q.y());
+  }
+}
+
+Piece window_piece(const Request& r, const Density& d, bool border, double margin)
+{
+  const std::unique_ptr<Sampler> sampler = make_sampler(r, d);
+  Piece p;
+  if(r.window) {
+    const std::array<double, 4>& w = *r.window;
+    const Rectangle window(Point(w[0], w[1]), Point(w[2], w[3]));
+    const CGAL::Penrose_Delaunay_window_2<K> part =
+      margin > 0. ? CGAL::Penrose_Delaunay_window_2<K>(*sampler, window, CGAL::parameters::window_margin(margin))
+                  : CGAL::Penrose_Delaunay_window_2<K>(*sampler, window);
+    for(const Point& q : part.points()) { p.xy.push_back(q.x()); p.xy.push_back(q.y()); }
+    p.keys = part.keys();
+    for(const auto& t : part.triangles()) p.triangles.insert(p.triangles.end(), t.begin(), t.end());
+    add_foreign(p, part.foreign_vertices());
+  }
+  if(border) {
+    const CGAL::Penrose_Delaunay_border_2<K> part(*sampler);
+    for(const auto& t : part.triangles()) p.triangles.insert(p.triangles.end(), t.begin(), t.end());
+    p.hull = part.hull();
+    add_foreign(p, part.vertices());
+  }
+  return p;
+}
+
+// Whether the window holds the region's lower left corner: the one window of
+// a partition that also gives the border's triangles.
+bool holds_lower_left_corner(const std::array<double, 4>& region, const std::array<double, 4>& w)
+{
+  const double x = region[0], y = region[1];
+  return w[0] <= x && w[1] <= y && (x < w[2] || w[2] >= region[2]) && (y < w[3] || w[3] >= region[3]);
+}
+
+py::tuple window_triangles(const py::object& density, const std::optional<std::array<double, 4>>& region,
+                           const std::optional<py::object>& n, const std::optional<std::array<double, 4>>& window,
+                           const std::optional<double>& scale, bool correction, const std::optional<double>& integral,
+                           const std::optional<bool>& border, double margin, bool foreign)
+{
+  Request r = make_request(n, scale, correction);
+  if(window) check_rectangle("window", *window);
+  if(integral && !(*integral >= 0. && std::isfinite(*integral)))
+    throw std::invalid_argument("integral must be finite and non-negative");
+  if(!(margin >= 0. && std::isfinite(margin))) throw std::invalid_argument("margin must be finite and non-negative");
+  r.window = window;
+  r.integral = integral;
+  Piece p = with_density(density, region, r, true, [&](const Density& d) {
+    const bool with_border = border.value_or(!window || holds_lower_left_corner(r.region, *window));
+    return window_piece(r, d, with_border, margin);
+  });
+  const std::size_t own = p.keys.size(), triangles = p.triangles.size() / 3, others = p.foreign_keys.size();
+  py::tuple t = py::make_tuple(to_numpy(std::move(p.xy), own, 2), to_numpy(std::move(p.keys), own, 1).reshape({own}),
+                               to_numpy(std::move(p.triangles), triangles, 3));
+  if(!foreign) return t;
+  const std::size_t h = p.hull.size();
+  return py::make_tuple(t[0], t[1], t[2], to_numpy(std::move(p.foreign_xy), others, 2),
+                        to_numpy(std::move(p.foreign_keys), others, 1).reshape({others}),
+                        to_numpy(std::move(p.hull), h, 1).reshape({h}));
+}
+
+double density_integral(const py::object& density, const std::optional<std::array<double, 4>>& region)
+{
+  Request r = make_request(std::nullopt, std::nullopt, true);
+  return with_density(density, region, r, false, [&](const Density& d) { return make_sampler(r, d)->density_integral(); });
+}
+
 } // namespace penrose_python
 
-PYBIND11_MODULE(penrose_delaunay, m)
+PYBIND11_MODULE(_core, m)
 {
   using namespace pybind11::literals;
   // The docstrings give the signatures, in Python's terms.
@@ -458,6 +559,44 @@ window: (x0, y0, x1, y1): only the samples of the region that lie in this
    their number. A window is closed on the region's border and open on its
    other sides, so that the windows of a partition of the region give each
    sample once: tiles that match at their borders.)doc");
+
+  m.def("window_triangles", &penrose_python::window_triangles, "density"_a, "region"_a = py::none(),
+        "n"_a = py::none(), "window"_a = py::none(), "scale"_a = py::none(), "correction"_a = true,
+        "integral"_a = py::none(), "border"_a = py::none(), "margin"_a = 0., "foreign"_a = false,
+        R"doc(window_triangles(density, region=None, n=None, window=None, scale=None, correction=True, integral=None,
+                 border=None, margin=0, foreign=False)
+    -> (points (N, 2) float64, keys (N,) uint64, triangles (M, 3) uint64)
+
+The part of `triangulate()`'s triangulation that the rectangle `window` =
+(x0, y0, x1, y1) owns, computed alone, without the rest of the region: its
+samples (those of `sample(..., window=window)`, by increasing key), their
+keys, and the triangles whose circumcentres lie in the window, each as the
+keys of its vertices, counter-clockwise. A key names a sample the same way
+in every window and process: the union over the windows of any partition
+of the region is `triangulate()`'s triangulation, exactly.
+
+The triangles whose circumcentres lie outside the region, along its border,
+come with the window that holds the region's lower left corner (`border`:
+True or False to decide otherwise; `window=None`: the border's alone).
+
+integral: the integral of the density over the region, as
+   `density_integral()` gives it: with it, the window's sampler does not
+   integrate the density over the whole region, and its points are the
+   same. Workers that share one get the same points.
+margin: the first margin around the window, in the region's units (0: from
+   the density); it grows where the triangles cannot be certified.
+foreign: also return, after those three, the other vertices of the
+   triangles (points (K, 2), keys (K,)) and the keys of the convex hull,
+   counter-clockwise, where the border was computed: what a driver needs to
+   number the vertices.
+The other arguments are those of `sample()`.)doc");
+
+  m.def("density_integral", &penrose_python::density_integral, "density"_a, "region"_a = py::none(),
+        R"doc(density_integral(density, region=None) -> float
+
+The integral of the density over the region, as the sampler estimates it
+(midpoint rule on a 512 x 512 grid): computed once by a driver and passed
+as `integral` to the windows of `window_triangles()`.)doc");
 
   m.def("triangulate", &penrose_python::triangulate, "density"_a, "region"_a = py::none(), "n"_a = py::none(),
         "scale"_a = py::none(), "correction"_a = true, "boundary"_a = false, "neighbors"_a = false, "threads"_a = 1,

@@ -61,6 +61,7 @@ public:
   /// @{
   typedef std::uint64_t Key;              ///< the name of a sample (`Penrose_importance_sampler::Sample::key`)
   typedef std::array<Key, 3> Triangle;    ///< three keys, counter-clockwise
+  typedef typename Traits::Point_2 Point_2;  ///< the point type
   /// @}
 
   /// \name Creation
@@ -70,6 +71,7 @@ public:
   /// \throws what sampling throws (see `Penrose_importance_sampler`), and
   /// what the density throws.
   explicit Penrose_Delaunay_border_2(const Penrose_importance_sampler<Traits>& sampler)
+    : traits_(sampler.geom_traits())
   {
     const internal::Penrose::Sampling_context& c = internal::Penrose::Sampler_access::context(sampler);
     region_ = {c.xmin(), c.ymin(), c.xmax(), c.ymax()};
@@ -90,6 +92,9 @@ public:
   const std::vector<Triangle>& triangles() const { return triangles_; }
   /// The vertices of the convex hull of the points, counter-clockwise.
   const std::vector<Key>& hull() const { return hull_; }
+  /// The vertices of those triangles and of the hull, with their keys, by
+  /// increasing key: the windows that own them give their numbers.
+  const std::vector<std::pair<Key, Point_2>>& vertices() const { return vertices_; }
   /// The width of the strip that the certificate accepted.
   double width() const { return width_; }
   /// How many times the strip was triangulated.
@@ -233,31 +238,39 @@ private:
   void collect(const Dt& dt)
   {
     auto in_region = [&](double x, double y) { return region_.contains(x, y); };
+    std::map<Key, K::Point_2> used;
     for(auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f) {
       const internal::Penrose::Circumcircle cc = circle(f);
       if(cc.is_finite() && in_region(cc.x, cc.y)) continue;
       triangles_.push_back({{f->vertex(0)->info().key, f->vertex(1)->info().key, f->vertex(2)->info().key}});
+      for(int i = 0; i < 3; ++i) used.emplace(f->vertex(i)->info().key, f->vertex(i)->point());
     }
-    if(dt.dimension() < 2) return;
-    // the hull edges, each from the vertex before to the vertex after it counter-clockwise
-    std::map<Key, Key> next;
-    auto f = dt.incident_faces(dt.infinite_vertex()), done = f;
-    do {
-      const int i = f->index(dt.infinite_vertex());
-      next[f->vertex(Dt::cw(i))->info().key] = f->vertex(Dt::ccw(i))->info().key;
-    } while(++f != done);
-    Key k = next.begin()->first;
-    do {
-      hull_.push_back(k);
-      k = next[k];
-    } while(k != hull_.front() && hull_.size() <= next.size());
+    if(dt.dimension() == 2) {
+      // the hull edges, each from the vertex before to the vertex after it counter-clockwise
+      std::map<Key, Key> next;
+      auto f = dt.incident_faces(dt.infinite_vertex()), done = f;
+      do {
+        const int i = f->index(dt.infinite_vertex());
+        next[f->vertex(Dt::cw(i))->info().key] = f->vertex(Dt::ccw(i))->info().key;
+        used.emplace(f->vertex(Dt::cw(i))->info().key, f->vertex(Dt::cw(i))->point());
+      } while(++f != done);
+      Key k = next.begin()->first;
+      do {
+        hull_.push_back(k);
+        k = next[k];
+      } while(k != hull_.front() && hull_.size() <= next.size());
+    }
+    for(const auto& [k, p] : used)
+      vertices_.emplace_back(k, traits_.construct_point_2_object()(typename Traits::FT(p.x()), typename Traits::FT(p.y())));
   }
 
+  Traits traits_;
   Box region_;
   double tolerance_ = 0., width_ = 0.;
   int attempts_ = 0;
   std::vector<Triangle> triangles_;
   std::vector<Key> hull_;
+  std::vector<std::pair<Key, Point_2>> vertices_;
 };
 
 } // namespace CGAL

@@ -185,10 +185,10 @@ private:
         Index nearest = Flat_mesh::null;
         for(Index v = 0; v < m_.points.size(); ++v) {
           if(m_.vertex_face[v] == Flat_mesh::null) continue;
-          const double d = std::hypot(x - m_.points[v].x(), y - m_.points[v].y());
-          if(d < best) { best = d; nearest = v; }
+          const double dx = x - m_.points[v].x(), dy = y - m_.points[v].y();
+          if(dx * dx + dy * dy < best) { best = dx * dx + dy * dy; nearest = v; }
         }
-        if(nearest == Flat_mesh::null || !w_.is_sample[nearest] || !g_.holds_disk(x, y, best)) return false;
+        if(nearest == Flat_mesh::null || !w_.is_sample[nearest] || !g_.holds_disk(x, y, std::sqrt(best))) return false;
       }
     return true;
   }
