@@ -24,7 +24,7 @@ inline const char* const usage_text =
   "                    [--gamma G] [--log] [--invert] [--gradient] [--height-scale S] [--viewer X Y]\n"
   "                    [--out-points FILE] [--out-mesh FILE] [--svg FILE] [--png FILE]\n"
   "                    [--reconstruct FILE] [--stats-json FILE] [--max-pixels N]\n"
-  "                    [--tiles K [--tile I J]]\n"
+  "                    [--tiles K [--tile I J]] [--streamed]\n"
   "\n"
   "density:\n"
   "  --density constant|ramp|radial\n"
@@ -127,6 +127,19 @@ inline const char* const usage_text =
   "                --out-mesh applies (not --fit-heights), and the border is always on\n"
   "  --tile I J    compute and write tile (I, J) of --tiles K only\n"
   "\n"
+  "larger than memory:\n"
+  "  --streamed    write --out-mesh (a .ply) window by window: windows of about 2^18\n"
+  "                points are triangulated alone, in parallel where TBB is linked,\n"
+  "                and written as they come, so that memory holds the windows in\n"
+  "                flight (about 0.3 GB), not the mesh: any number of points, as the\n"
+  "                disk allows. The same triangulation (of the samples alone, without\n"
+  "                border points), its vertices numbered window by window; binary\n"
+  "                little-endian, x and y as doubles, 32-bit indices (64-bit beyond\n"
+  "                3.5 x 10^9 points). Chosen by itself for a --density with only\n"
+  "                --out-mesh FILE.ply when the mesh would take more than half the\n"
+  "                memory. Not with --terrain, --boundary, --tiles or other outputs\n"
+  "  --window-points N  about N points in a window of --streamed (default 262144)\n"
+  "\n"
   "A progress bar is drawn on stderr, when it is a terminal, for runs over a second.\n"
   "A file that cannot be read or written ends the run with status 1 and one line\n"
   "naming it and the problem; a bad option, with status 2.\n"
@@ -160,6 +173,8 @@ struct Options
   bool viewer_given = false;
   double viewer[2] = {0, 0};
   std::string out_points, out_mesh, svg, png, reconstruct, stats_json;
+  bool streamed = false;     // --out-mesh written window by window
+  double window_points = 262144.;
   int tiles = 0;             // 0: one mesh
   int tile[2] = {-1, -1};    // -1: every tile
   double max_pixels = double(CGAL::IO::default_max_pixels);
@@ -191,6 +206,12 @@ inline int whole_number(const char* s, const std::string& option, int lo, int hi
   return int(v);
 }
 
+// Whether --out-mesh is the only output asked for, as --streamed needs.
+inline bool streamable_outputs(const Options& o)
+{
+  return o.out_points.empty() && o.svg.empty() && o.png.empty() && o.reconstruct.empty() && o.stats_json.empty();
+}
+
 // The options of the command line `argv` (argv[0] the program); --help sets
 // `help` and ends the parse.
 inline Options parse(int argc, const char* const* argv)
@@ -198,7 +219,7 @@ inline Options parse(int argc, const char* const* argv)
   Options o;
   bool have_points = false, have_scale = false, have_density = false;
   bool have_boundary = false, no_boundary = false, have_max_error = false, have_base_fraction = false;
-  bool have_gamma = false;
+  bool have_gamma = false, have_window_points = false;
   for(int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     auto value = [&](int k = 1) -> const char* {
@@ -232,6 +253,8 @@ inline Options parse(int argc, const char* const* argv)
     else if(a == "--stats-json") text(o.stats_json);
     else if(a == "--max-pixels") { o.max_pixels = number(value(), a); ++i; }
     else if(a == "--tiles") { o.tiles = whole_number(value(), a, 1, 1024); ++i; }
+    else if(a == "--streamed") o.streamed = true;
+    else if(a == "--window-points") { o.window_points = number(value(), a); have_window_points = true; ++i; }
     else if(a == "--tile") {
       for(int k = 0; k < 2; ++k) o.tile[k] = whole_number(value(k + 1), a, 0, 1023);
       i += 2;
@@ -277,6 +300,17 @@ inline Options parse(int argc, const char* const* argv)
   if(o.tile[0] >= 0 && o.tiles == 0) usage_error("--tile I J needs --tiles K");
   if(o.tile[0] >= o.tiles || o.tile[1] >= o.tiles)
     usage_error("--tile I J must be within 0.." + std::to_string(o.tiles - 1) + " for --tiles " + std::to_string(o.tiles));
+  if(have_window_points && !(o.window_points >= 16. && o.window_points <= 1e9))
+    usage_error("--window-points must be in [16, 1e9]");
+  if(have_window_points && !o.streamed) usage_error("--window-points applies to --streamed");
+  if(o.streamed) {
+    if(o.out_mesh.size() < 4 || o.out_mesh.compare(o.out_mesh.size() - 4, 4, ".ply") != 0)
+      usage_error("--streamed needs --out-mesh FILE.ply");
+    if(terrain || o.tiles || have_max_error || o.fit_heights)
+      usage_error("--streamed applies to --density alone (not --terrain, --tiles, --max-error or --fit-heights)");
+    if(!streamable_outputs(o)) usage_error("--streamed writes --out-mesh only");
+    if(o.boundary) usage_error("--streamed triangulates the samples alone: give --no-boundary");
+  }
   if(o.tiles) {
     if(o.out_mesh.empty()) usage_error(std::string(o.tile[0] >= 0 ? "--tile" : "--tiles") + " needs --out-mesh");
     const std::pair<const char*, const std::string*> others[] = {

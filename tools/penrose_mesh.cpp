@@ -29,6 +29,7 @@
 #include "mesh_raster.h"
 #include "progress_bar.h"
 #include "raster_maps.h"
+#include "streamed_ply.h"
 #include "svg_writer.h"
 #include "tiles.h"
 
@@ -197,18 +198,20 @@ Density make_density(const Options& o, Input& in, const K::Iso_rectangle_2& regi
 }
 
 // `n` points, or the density scaled by o.scale if n is 0.
+// The sampler takes any count: what a construction can hold is checked by
+// the construction, and a streamed one holds windows only.
 std::unique_ptr<Sampler> make_sampler(const Options& o, const K::Iso_rectangle_2& region, const Density& d, std::size_t n)
 {
   using CGAL::parameters::use_correction_vectors;
   using CGAL::parameters::density_upper_bound;
+  const std::size_t most = std::numeric_limits<std::size_t>::max();
+  const auto np = use_correction_vectors(o.correction).maximum_number(most);
   if(d.upper_bound) {
-    if(n) return std::make_unique<Sampler>(region, d.value, density_upper_bound(d.upper_bound,
-                 use_correction_vectors(o.correction).number_of_output_points(n)));
-    return std::make_unique<Sampler>(region, d.value, density_upper_bound(d.upper_bound,
-                 use_correction_vectors(o.correction).density_control_factor(o.scale)));
+    if(n) return std::make_unique<Sampler>(region, d.value, density_upper_bound(d.upper_bound, np.number_of_output_points(n)));
+    return std::make_unique<Sampler>(region, d.value, density_upper_bound(d.upper_bound, np.density_control_factor(o.scale)));
   }
-  if(n) return std::make_unique<Sampler>(region, d.value, use_correction_vectors(o.correction).number_of_output_points(n));
-  return std::make_unique<Sampler>(region, d.value, use_correction_vectors(o.correction).density_control_factor(o.scale));
+  if(n) return std::make_unique<Sampler>(region, d.value, np.number_of_output_points(n));
+  return std::make_unique<Sampler>(region, d.value, np.density_control_factor(o.scale));
 }
 
 // The triangulation of the sampler's points, each vertex's info its index in
@@ -756,6 +759,29 @@ auto in_context(const Options& o, const Step& step)
   }
 }
 
+// Whether the mesh is written window by window: when asked, or when only a
+// PLY of a density's samples is asked for and the mesh would take more than
+// half the memory (about 300 bytes a point with penrose_mesh's own arrays).
+bool streams(const Options& o, const Sampler& sampler)
+{
+  if(o.streamed) return true;
+  const bool ply = o.out_mesh.size() >= 4 && o.out_mesh.compare(o.out_mesh.size() - 4, 4, ".ply") == 0;
+  return ply && o.terrain.empty() && !o.tiles && !o.boundary && penrose_tools::streamable_outputs(o)
+         && 300. * sampler.expected_number_of_points() > 0.5 * CGAL::internal::Penrose::physical_memory_bytes();
+}
+
+void write_streamed(const Options& o, const Sampler& sampler, penrose_tools::Progress_bar& bar,
+                    std::chrono::steady_clock::time_point start)
+{
+  penrose_tools::Streamed_ply_writer<K> writer(sampler, o.window_points);
+  bar.stage("streaming", 0.2, 1.);
+  const penrose_tools::Streamed_mesh m =
+    in_context(o, [&] { return writer.write(o.out_mesh, [&bar](double f) { bar.set(f); }); });
+  bar.finish();
+  std::cerr << "penrose_mesh: " << m.vertices << " points, " << m.faces << " triangles in " << seconds_since(start)
+            << " s, streamed in " << m.windows << " windows\n";
+}
+
 void run(Options o)
 {
   const auto start = std::chrono::steady_clock::now();
@@ -803,6 +829,11 @@ void run(Options o)
   const std::unique_ptr<Sampler> sampler = in_context(o, [&] { return make_sampler(o, region, d, n); });
   time.sample = seconds_since(t0);
   const Plan plan{greedy, budget, sampler->density_scale() * (greedy && bounded && n ? double(budget) / double(n) : 1.)};
+
+  if(streams(o, *sampler)) {
+    write_streamed(o, *sampler, bar, start);
+    return;
+  }
 
   if(o.tiles) {
     bar.stage("tiles", 0.2, 1.);

@@ -13,15 +13,28 @@
 //     rectangles meet exactly, and every vertex on a tile edge shared with
 //     a neighbour is a vertex of the neighbour, with the same coordinates
 //     bit for bit. Prints what fails and exits with status 1.
+//   mesh_check delaunay MESH.ply [X0 Y0 X1 Y1]
+//     checks a binary PLY of `--streamed` (x, y as doubles; uint or uint64
+//     indices) against CGAL's Delaunay_triangulation_2 of its points: every
+//     triangle is CGAL's, once, counter-clockwise, and there are 2N - h - 2
+//     of them; with a window, only the triangles whose circumcentres lie in
+//     it, against CGAL's triangulation of the points around it (for files
+//     too large to triangulate whole). Exits with status 1 if not.
 
+#include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/IO/OFF.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
+#include <cstring>
+#include <fstream>
 #include <iostream>
+#include <sstream>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -136,6 +149,124 @@ int check_tiles(int k, const std::string& prefix)
   return failures ? 1 : 0;
 }
 
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K2;
+typedef std::array<std::uint64_t, 3> Face;
+
+Face rotated(Face f)
+{
+  std::rotate(f.begin(), std::min_element(f.begin(), f.end()), f.end());
+  return f;
+}
+
+// The circumcentre, or NaN for a flat triangle.
+std::array<double, 2> circumcentre(const K2::Point_2& a, const K2::Point_2& b, const K2::Point_2& c)
+{
+  const double bx = b.x() - a.x(), by = b.y() - a.y(), cx = c.x() - a.x(), cy = c.y() - a.y();
+  const double d = 2. * (bx * cy - by * cx), b2 = bx * bx + by * by, c2 = cx * cx + cy * cy;
+  return {a.x() + (cy * b2 - by * c2) / d, a.y() + (bx * c2 - cx * b2) / d};
+}
+
+struct Ply_reader
+{
+  std::ifstream in;
+  std::uint64_t vertices = 0, faces = 0;
+  bool wide = false;
+
+  explicit Ply_reader(const std::string& file) : in(file, std::ios::binary)
+  {
+    std::string line, word;
+    if(!std::getline(in, line) || line != "ply") throw std::runtime_error(file + ": not a PLY file");
+    while(std::getline(in, line) && line != "end_header") {
+      std::istringstream l(line);
+      l >> word;
+      if(word == "format" && (l >> word, word != "binary_little_endian")) throw std::runtime_error(file + ": not binary little-endian");
+      if(word == "element") {
+        std::string what;
+        std::uint64_t n;
+        l >> what >> n;
+        (what == "vertex" ? vertices : faces) = n;
+      }
+      if(word == "property" && line.find("vertex_indices") != std::string::npos) wide = line.find("uint64") != std::string::npos;
+    }
+    if(!in) throw std::runtime_error(file + ": truncated header");
+  }
+
+  std::vector<K2::Point_2> points()
+  {
+    std::vector<double> xy(2 * vertices);
+    in.read(reinterpret_cast<char*>(xy.data()), std::streamsize(xy.size() * sizeof(double)));
+    if(!in) throw std::runtime_error("truncated vertices");
+    std::vector<K2::Point_2> p;
+    p.reserve(vertices);
+    for(std::uint64_t i = 0; i < vertices; ++i) p.emplace_back(xy[2 * i], xy[2 * i + 1]);
+    return p;
+  }
+
+  Face face()
+  {
+    unsigned char n = 0;
+    in.read(reinterpret_cast<char*>(&n), 1);
+    if(!in || n != 3) throw std::runtime_error("a face that is not a triangle, or truncated faces");
+    Face f;
+    for(auto& v : f) {
+      if(wide) in.read(reinterpret_cast<char*>(&v), 8);
+      else { std::uint32_t u; in.read(reinterpret_cast<char*>(&u), 4); v = u; }
+    }
+    if(!in) throw std::runtime_error("truncated faces");
+    return f;
+  }
+};
+
+int check_delaunay(const std::string& file, const double* window)
+{
+  Ply_reader ply(file);
+  const std::vector<K2::Point_2> points = ply.points();
+  double box[4] = {-1e300, -1e300, 1e300, 1e300};  // the points triangulated: all, or those around the window
+  if(window) {
+    const double g = 0.1 * std::max(window[2] - window[0], window[3] - window[1]);
+    box[0] = window[0] - g; box[1] = window[1] - g; box[2] = window[2] + g; box[3] = window[3] + g;
+  }
+  auto in_box = [&](const K2::Point_2& p) { return p.x() >= box[0] && p.y() >= box[1] && p.x() <= box[2] && p.y() <= box[3]; };
+  auto in_window = [&](const std::array<double, 2>& c) {
+    return !window || (c[0] >= window[0] && c[1] >= window[1] && c[0] < window[2] && c[1] < window[3]);
+  };
+  std::vector<std::pair<K2::Point_2, std::uint64_t>> chosen;
+  for(std::uint64_t i = 0; i < points.size(); ++i)
+    if(in_box(points[i])) chosen.emplace_back(points[i], i);
+  typedef CGAL::Triangulation_vertex_base_with_info_2<std::uint64_t, K2> Vb;
+  typedef CGAL::Delaunay_triangulation_2<K2, CGAL::Triangulation_data_structure_2<Vb>> Dt;
+  const Dt dt(chosen.begin(), chosen.end());
+  std::set<Face> reference;
+  for(auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f) {
+    const auto c = circumcentre(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point());
+    if(window && !in_window(c)) continue;
+    reference.insert(rotated({f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()}));
+  }
+  std::set<Face> found;
+  std::uint64_t twice = 0, not_ccw = 0;
+  for(std::uint64_t k = 0; k < ply.faces; ++k) {
+    const Face f = ply.face();
+    if(f[0] >= points.size() || f[1] >= points.size() || f[2] >= points.size()) throw std::runtime_error("an index past the vertices");
+    if(window) {
+      if(!in_box(points[f[0]]) || !in_box(points[f[1]]) || !in_box(points[f[2]])) continue;
+      if(!in_window(circumcentre(points[f[0]], points[f[1]], points[f[2]]))) continue;
+    }
+    if(CGAL::orientation(points[f[0]], points[f[1]], points[f[2]]) != CGAL::LEFT_TURN) ++not_ccw;
+    if(!found.insert(rotated(f)).second) ++twice;
+  }
+  const std::size_t hull = window ? 0 : dt.degree(dt.infinite_vertex());
+  std::size_t missing = 0;
+  for(const Face& f : reference) missing += found.count(f) == 0;
+  const std::size_t extra = found.size() + missing - reference.size();
+  std::cout << points.size() << " points, " << ply.faces << " triangles in the file, " << found.size()
+            << " checked: " << missing << " of CGAL's missing, " << extra << " not CGAL's, " << twice << " twice, "
+            << not_ccw << " clockwise";
+  const bool count_holds = window || ply.faces == 2 * points.size() - hull - 2;
+  if(!window) std::cout << "; 2N - h - 2 = " << 2 * points.size() - hull - 2;
+  std::cout << "\n";
+  return missing || extra || twice || not_ccw || !count_holds ? 1 : 0;
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -151,7 +282,12 @@ int main(int argc, char** argv)
       return 0;
     }
     if(command == "tiles" && argc == 4) return check_tiles(std::atoi(argv[2]), argv[3]);
-    std::cerr << "usage: mesh_check border-angle MESH [X0 Y0 X1 Y1] | tiles K PREFIX\n";
+    if(command == "delaunay" && (argc == 3 || argc == 7)) {
+      double w[4];
+      for(int k = 0; k < 4 && argc == 7; ++k) w[k] = std::atof(argv[3 + k]);
+      return check_delaunay(argv[2], argc == 7 ? w : nullptr);
+    }
+    std::cerr << "usage: mesh_check border-angle MESH [X0 Y0 X1 Y1] | tiles K PREFIX | delaunay MESH.ply [X0 Y0 X1 Y1]\n";
   } catch(const std::exception& e) {
     std::cerr << "mesh_check: " << e.what() << "\n";
   }

@@ -1,0 +1,374 @@
+// Copyright (c) 2026 The Penrose_Delaunay_triangulation_2 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The triangulation of a sampler's points written window by window into one
+// binary little-endian PLY, for constructions larger than memory: each
+// window of a grid is triangulated alone (Penrose_Delaunay_window_2), in
+// parallel where TBB is linked, and written in the grid's order, so that
+// memory holds the windows in flight, not the mesh.
+//
+// A window's samples are numbered after those of the windows before it, by
+// key. Most of its triangles have all their vertices in it, or in windows
+// already written (the one to the left, the row below), whose numbers come
+// from their keys; a triangle with a vertex in a window not yet written
+// waits for that window, and so do the border's triangles
+// (Penrose_Delaunay_border_2), computed first. The keys of the last row of
+// windows are kept; an older window's keys, if ever needed (a margin grown
+// over a hole), are sampled again: the sampler is deterministic.
+//
+// The vertices go to the file as they are numbered and the faces to a
+// second file beside it, appended at the end; the counts, unknown until
+// then, are written into the header's fixed-width fields, and the file is
+// renamed over the target only when it is complete.
+
+#ifndef PENROSE_TOOLS_STREAMED_PLY_H
+#define PENROSE_TOOLS_STREAMED_PLY_H
+
+#include <CGAL/Penrose_Delaunay_border_2.h>
+#include <CGAL/Penrose_Delaunay_window_2.h>
+#include <CGAL/Penrose_importance_sampler.h>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/parallel_pipeline.h>
+#include <tbb/task_arena.h>
+#endif
+
+#include <sys/stat.h>
+#include <sys/statvfs.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <array>
+#include <cerrno>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <functional>
+#include <map>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+namespace penrose_tools {
+
+struct Streamed_mesh
+{
+  std::uint64_t vertices = 0, faces = 0;
+  std::size_t windows = 0;
+};
+
+template <class K>
+class Streamed_ply_writer
+{
+  typedef CGAL::Penrose_importance_sampler<K> Sampler;
+  typedef CGAL::Penrose_Delaunay_window_2<K> Window;
+  typedef std::uint64_t Key;
+  typedef std::array<Key, 3> Triangle;
+
+public:
+  // About 2^18 points a window by default: its mesh stays in the caches'
+  // reach, and the margin adds under 2% of points.
+  static constexpr double default_points_per_window = 262144.;
+
+  explicit Streamed_ply_writer(const Sampler& sampler, double points_per_window = default_points_per_window)
+    : s_(sampler)
+  {
+    const auto& r = s_.region();
+    x0_ = CGAL::to_double(r.xmin()); y0_ = CGAL::to_double(r.ymin());
+    x1_ = CGAL::to_double(r.xmax()); y1_ = CGAL::to_double(r.ymax());
+    const double windows = (std::max)(1., s_.expected_number_of_points() / points_per_window);
+    const double side = std::sqrt((x1_ - x0_) * (y1_ - y0_) / windows);
+    kx_ = std::size_t((std::max)(1., std::round((x1_ - x0_) / side)));
+    ky_ = std::size_t((std::max)(1., std::round((y1_ - y0_) / side)));
+    for(std::size_t i = 0; i <= kx_; ++i) cx_.push_back(i == kx_ ? x1_ : x0_ + (x1_ - x0_) * double(i) / double(kx_));
+    for(std::size_t j = 0; j <= ky_; ++j) cy_.push_back(j == ky_ ? y1_ : y0_ + (y1_ - y0_) * double(j) / double(ky_));
+    // a uint index while the count, with a generous margin, fits in 32 bits
+    wide_ = s_.expected_number_of_points() * 1.2 + 1e6 > 4294967295.;
+  }
+
+  std::size_t number_of_windows() const { return kx_ * ky_; }
+
+  // The bytes the file will take, about.
+  double expected_bytes() const
+  {
+    return s_.expected_number_of_points() * (16. + 2. * (1. + (wide_ ? 24. : 12.))) + 4096.;
+  }
+
+  // Writes the PLY to `path`; `progress(f)` is called from the calling
+  // thread with the share f of the windows written.
+  Streamed_mesh write(const std::string& path, const std::function<void(double)>& progress)
+  {
+    check_free_space(path);
+    Temporary_file vertices(path), faces(path);
+    vertices_ = vertices.file;
+    faces_ = faces.file;
+    write_header();
+    const CGAL::Penrose_Delaunay_border_2<K> border(s_);
+    wait_for_owners(border.triangles(), border.vertices());
+    offsets_.assign(number_of_windows() + 1, 0);
+    for_each_window_in_order([&](std::size_t id, const Window& w) {
+      write_window(id, w);
+      if(progress) progress(double(id + 1) / double(number_of_windows()));
+    });
+    if(!pending_.empty()) throw std::logic_error("streamed PLY: triangles left waiting for a window");
+    finish(vertices, faces);
+    vertices.keep_as(path);
+    return {next_vertex_, faces_written_, number_of_windows()};
+  }
+
+private:
+  // A file beside the target, removed unless kept.
+  struct Temporary_file
+  {
+    std::string name;
+    std::FILE* file = nullptr;
+
+    explicit Temporary_file(const std::string& target)
+    {
+      std::string pattern = target + ".partial.XXXXXX";
+      const int fd = mkstemp(pattern.data());
+      if(fd < 0) throw std::runtime_error(target + ": cannot write beside it: " + std::strerror(errno));
+      name = pattern;
+      // mkstemp's file is the owner's only: give it the mode of a file made by open()
+      const mode_t mask = umask(0);
+      umask(mask);
+      fchmod(fd, 0666 & ~mask);
+      file = fdopen(fd, "w+b");
+      if(!file) { ::close(fd); std::remove(name.c_str()); throw std::runtime_error(target + ": cannot write"); }
+      std::setvbuf(file, nullptr, _IOFBF, std::size_t(1) << 20);
+    }
+    ~Temporary_file()
+    {
+      if(file) std::fclose(file);
+      if(!name.empty()) std::remove(name.c_str());
+    }
+    void keep_as(const std::string& target)
+    {
+      if(std::fclose(file) != 0) { file = nullptr; throw std::runtime_error(target + ": " + std::strerror(errno)); }
+      file = nullptr;
+      if(std::rename(name.c_str(), target.c_str()) != 0) throw std::runtime_error(target + ": " + std::strerror(errno));
+      name.clear();
+    }
+  };
+
+  void check_free_space(const std::string& path) const
+  {
+    const std::size_t slash = path.find_last_of('/');
+    const std::string folder = slash == std::string::npos ? "." : (slash == 0 ? "/" : path.substr(0, slash));
+    struct statvfs fs;
+    if(statvfs(folder.c_str(), &fs) != 0) return;  // the writes will say
+    const double available = double(fs.f_bavail) * double(fs.f_frsize);
+    // the faces are written beside the vertices, then appended: they take their room twice for a while
+    const double needed = 1.05 * (expected_bytes() + s_.expected_number_of_points() * 2. * (wide_ ? 25. : 13.));
+    if(needed > available) {
+      char msg[160];
+      std::snprintf(msg, sizeof msg, ": about %.3g GB needed while it is written, %.3g GB free there", needed / 1e9,
+                    available / 1e9);
+      throw std::runtime_error(path + msg);
+    }
+  }
+
+  static constexpr int count_width = 20;
+
+  void write_header()
+  {
+    std::string h = header(0, 0);
+    put(vertices_, h.data(), h.size());
+    header_size_ = h.size();
+  }
+
+  std::string header(std::uint64_t vertices, std::uint64_t faces) const
+  {
+    char v[32], f[32];
+    std::snprintf(v, sizeof v, "%*llu", count_width, static_cast<unsigned long long>(vertices));
+    std::snprintf(f, sizeof f, "%*llu", count_width, static_cast<unsigned long long>(faces));
+    return std::string("ply\nformat binary_little_endian 1.0\ncomment Delaunay triangulation written window by window by penrose_mesh\n")
+           + "element vertex " + v + "\nproperty double x\nproperty double y\n"
+           + "element face " + f + "\nproperty list uchar " + (wide_ ? "uint64" : "uint") + " vertex_indices\nend_header\n";
+  }
+
+  static void put(std::FILE* file, const void* data, std::size_t size)
+  {
+    if(size && std::fwrite(data, 1, size, file) != size)
+      throw std::runtime_error(std::string("cannot write the mesh: ") + std::strerror(errno));
+  }
+
+  std::size_t owner_along(const std::vector<double>& cuts, double v) const
+  {
+    const std::size_t i = std::size_t(std::upper_bound(cuts.begin(), cuts.end(), v) - cuts.begin());
+    return std::min<std::size_t>(i == 0 ? 0 : i - 1, cuts.size() - 2);
+  }
+
+  template <class Point>
+  std::size_t owner(const Point& p) const
+  {
+    return owner_along(cy_, CGAL::to_double(p.y())) * kx_ + owner_along(cx_, CGAL::to_double(p.x()));
+  }
+
+  typename K::Iso_rectangle_2 rectangle(std::size_t id) const
+  {
+    const std::size_t i = id % kx_, j = id / kx_;
+    return typename K::Iso_rectangle_2(cx_[i], cy_[j], cx_[i + 1], cy_[j + 1]);
+  }
+
+  // Computes the windows, in parallel where TBB is linked, and hands them
+  // to `write` one after the other, in order.
+  template <class Write>
+  void for_each_window_in_order(const Write& write)
+  {
+    const std::size_t n = number_of_windows();
+#ifdef CGAL_LINKED_WITH_TBB
+    std::size_t next = 0;
+    const std::size_t tokens = 2 * std::size_t(tbb::this_task_arena::max_concurrency());
+    tbb::parallel_pipeline(tokens,
+      tbb::make_filter<void, std::size_t>(tbb::filter_mode::serial_in_order, [&](tbb::flow_control& fc) {
+        if(next == n) { fc.stop(); return std::size_t(0); }
+        return next++;
+      }) &
+      tbb::make_filter<std::size_t, std::pair<std::size_t, std::shared_ptr<Window>>>(tbb::filter_mode::parallel,
+        [&](std::size_t id) { return std::make_pair(id, std::make_shared<Window>(s_, rectangle(id))); }) &
+      tbb::make_filter<std::pair<std::size_t, std::shared_ptr<Window>>, void>(tbb::filter_mode::serial_in_order,
+        [&](const std::pair<std::size_t, std::shared_ptr<Window>>& w) { write(w.first, *w.second); }));
+#else
+    for(std::size_t id = 0; id < n; ++id) write(id, Window(s_, rectangle(id)));
+#endif
+  }
+
+  // Notes which windows the vertices of `triangles` (positions in
+  // `vertices`, by key) lie in; each triangle waits for the last of them.
+  template <class Triangles, class Vertices>
+  void wait_for_owners(const Triangles& triangles, const Vertices& vertices)
+  {
+    std::unordered_map<Key, std::size_t> owner_of;
+    for(const auto& [k, p] : vertices) owner_of.emplace(k, owner(p));
+    for(const Triangle& t : triangles) {
+      std::size_t last = 0;
+      for(Key k : t) {
+        const std::size_t o = owner_of.at(k);
+        last = (std::max)(last, o);
+        wanted_[o].push_back(k);
+      }
+      pending_[last].push_back(t);
+    }
+  }
+
+  // The sorted keys of window `id`, from the row kept or sampled again.
+  const std::vector<Key>& keys_of(std::size_t id)
+  {
+    auto it = recent_keys_.find(id);
+    if(it != recent_keys_.end()) return it->second;
+    std::vector<typename Sampler::Sample> samples;
+    s_.samples(rectangle(id), std::back_inserter(samples));
+    std::vector<Key> keys;
+    for(const auto& sample : samples) keys.push_back(sample.key);
+    std::sort(keys.begin(), keys.end());
+    return recent_keys_[id] = std::move(keys);
+  }
+
+  std::uint64_t number_in(std::size_t id, Key k)
+  {
+    const std::vector<Key>& keys = keys_of(id);
+    const auto it = std::lower_bound(keys.begin(), keys.end(), k);
+    if(it == keys.end() || *it != k) throw std::logic_error("streamed PLY: a vertex is missing from its window");
+    return offsets_[id] + std::uint64_t(it - keys.begin());
+  }
+
+  void write_window(std::size_t id, const Window& w)
+  {
+    offsets_[id] = next_vertex_;
+    for(const auto& p : w.points()) {
+      const double xy[2] = {CGAL::to_double(p.x()), CGAL::to_double(p.y())};
+      put(vertices_, xy, sizeof xy);
+    }
+    next_vertex_ += w.points().size();
+    recent_keys_[id] = w.keys();
+    for(Key k : wanted_[id]) numbers_.emplace(k, number_in(id, k));
+    wanted_.erase(id);
+    // the vertices of other windows, by key
+    std::unordered_map<Key, std::size_t> foreign_owner;
+    for(const auto& [k, p] : w.foreign_vertices()) foreign_owner.emplace(k, owner(p));
+    for(const Triangle& t : w.triangles()) {
+      std::size_t last = id;
+      for(Key k : t)
+        if(auto f = foreign_owner.find(k); f != foreign_owner.end()) last = (std::max)(last, f->second);
+      if(last == id) {
+        write_face(t, [&](Key k) {
+          auto f = foreign_owner.find(k);
+          return f == foreign_owner.end() ? number_in(id, k) : number_in(f->second, k);
+        });
+      } else {
+        for(Key k : t)
+          if(auto f = foreign_owner.find(k); f != foreign_owner.end() && f->second > id) wanted_[f->second].push_back(k);
+        // the vertices in windows already written are numbered now, while their keys are at hand
+        for(Key k : t) {
+          auto f = foreign_owner.find(k);
+          const std::size_t o = f == foreign_owner.end() ? id : f->second;
+          if(o <= id) numbers_.emplace(k, number_in(o, k));
+        }
+        pending_[last].push_back(t);
+      }
+    }
+    if(auto p = pending_.find(id); p != pending_.end()) {
+      for(const Triangle& t : p->second) write_face(t, [&](Key k) { return numbers_.at(k); });
+      pending_.erase(p);
+    }
+    // the row below the next window stays; older ones are sampled again if needed
+    while(!recent_keys_.empty() && recent_keys_.begin()->first + kx_ + 1 < id) recent_keys_.erase(recent_keys_.begin());
+  }
+
+  template <class Number>
+  void write_face(const Triangle& t, const Number& number)
+  {
+    unsigned char record[1 + 3 * 8];
+    record[0] = 3;
+    std::size_t size = 1;
+    for(Key k : t) {
+      const std::uint64_t v = number(k);
+      if(wide_) { std::memcpy(record + size, &v, 8); size += 8; }
+      else {
+        if(v > 0xffffffffu) throw std::length_error("streamed PLY: more vertices than 32-bit indices hold");
+        const std::uint32_t u = std::uint32_t(v);
+        std::memcpy(record + size, &u, 4); size += 4;
+      }
+    }
+    put(faces_, record, size);
+    ++faces_written_;
+  }
+
+  void finish(Temporary_file& vertices, Temporary_file& faces)
+  {
+    if(std::fflush(faces.file) != 0 || std::fseek(faces.file, 0, SEEK_SET) != 0)
+      throw std::runtime_error(std::string("cannot write the mesh: ") + std::strerror(errno));
+    std::vector<char> buffer(std::size_t(1) << 22);
+    for(std::size_t got; (got = std::fread(buffer.data(), 1, buffer.size(), faces.file)) > 0;) put(vertices.file, buffer.data(), got);
+    if(std::ferror(faces.file)) throw std::runtime_error("cannot read the mesh's faces back");
+    const std::string h = header(next_vertex_, faces_written_);
+    if(h.size() != header_size_ || std::fflush(vertices.file) != 0 || std::fseek(vertices.file, 0, SEEK_SET) != 0)
+      throw std::runtime_error(std::string("cannot write the mesh: ") + std::strerror(errno));
+    put(vertices.file, h.data(), h.size());
+    if(std::fflush(vertices.file) != 0) throw std::runtime_error(std::string("cannot write the mesh: ") + std::strerror(errno));
+  }
+
+  const Sampler& s_;
+  double x0_, y0_, x1_, y1_;
+  std::size_t kx_, ky_;
+  std::vector<double> cx_, cy_;
+  bool wide_;
+  std::FILE* vertices_ = nullptr;
+  std::FILE* faces_ = nullptr;
+  std::size_t header_size_ = 0;
+  std::uint64_t next_vertex_ = 0, faces_written_ = 0;
+  std::vector<std::uint64_t> offsets_;
+  std::map<std::size_t, std::vector<Key>> recent_keys_;
+  std::map<std::size_t, std::vector<Key>> wanted_;            // by window: keys whose numbers are awaited
+  std::map<std::size_t, std::vector<Triangle>> pending_;      // by the last window a triangle waits for
+  std::unordered_map<Key, std::uint64_t> numbers_;
+};
+
+} // namespace penrose_tools
+
+#endif // PENROSE_TOOLS_STREAMED_PLY_H
