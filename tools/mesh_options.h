@@ -139,6 +139,8 @@ inline const char* const usage_text =
   "                --out-mesh FILE.ply when the mesh would take more than half the\n"
   "                memory. Not with --terrain, --boundary, --tiles or other outputs\n"
   "  --window-points N  about N points in a window of --streamed (default 262144)\n"
+  "  --threads T   run --streamed and --tiles on T threads (default: all that TBB\n"
+  "                allows, where TBB is linked)\n"
   "\n"
   "A progress bar is drawn on stderr, when it is a terminal, for runs over a second.\n"
   "A file that cannot be read or written ends the run with status 1 and one line\n"
@@ -175,6 +177,7 @@ struct Options
   std::string out_points, out_mesh, svg, png, reconstruct, stats_json;
   bool streamed = false;     // --out-mesh written window by window
   double window_points = 262144.;
+  int threads = 0;           // 0: as many as TBB allows
   int tiles = 0;             // 0: one mesh
   int tile[2] = {-1, -1};    // -1: every tile
   double max_pixels = double(CGAL::IO::default_max_pixels);
@@ -254,6 +257,7 @@ inline Options parse(int argc, const char* const* argv)
     else if(a == "--max-pixels") { o.max_pixels = number(value(), a); ++i; }
     else if(a == "--tiles") { o.tiles = whole_number(value(), a, 1, 1024); ++i; }
     else if(a == "--streamed") o.streamed = true;
+    else if(a == "--threads") { o.threads = whole_number(value(), a, 1, 4096); ++i; }
     else if(a == "--window-points") { o.window_points = number(value(), a); have_window_points = true; ++i; }
     else if(a == "--tile") {
       for(int k = 0; k < 2; ++k) o.tile[k] = whole_number(value(k + 1), a, 0, 1023);

@@ -34,6 +34,7 @@
 #include "tiles.h"
 
 #ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 #endif
 
@@ -45,6 +46,7 @@
 #include <iostream>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -924,6 +926,10 @@ int main(int argc, char** argv)
 {
   try {
     const Options o = penrose_tools::parse(argc, argv);
+#ifdef CGAL_LINKED_WITH_TBB
+    std::optional<tbb::global_control> threads;
+    if(o.threads > 0) threads.emplace(tbb::global_control::max_allowed_parallelism, std::size_t(o.threads));
+#endif
     if(o.help) std::cout << penrose_tools::usage_text;
     else run(o);
   } catch(const penrose_tools::Usage_error& e) {

@@ -45,6 +45,7 @@
 #include <cstdio>
 #include <cstring>
 #include <functional>
+#include <limits>
 #include <map>
 #include <memory>
 #include <stdexcept>
@@ -52,6 +53,10 @@
 #include <unordered_map>
 #include <utility>
 #include <vector>
+
+#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ != __ORDER_LITTLE_ENDIAN__
+#error "the streamed PLY is written from the machine's words: little-endian machines only"
+#endif
 
 namespace penrose_tools {
 
@@ -279,70 +284,87 @@ private:
 
   void write_window(std::size_t id, const Window& w)
   {
+    const std::size_t n = w.points().size();
     offsets_[id] = next_vertex_;
-    for(const auto& p : w.points()) {
-      const double xy[2] = {CGAL::to_double(p.x()), CGAL::to_double(p.y())};
-      put(vertices_, xy, sizeof xy);
-    }
-    next_vertex_ += w.points().size();
+    std::vector<double> xy;
+    xy.reserve(2 * n);
+    for(const auto& p : w.points()) { xy.push_back(CGAL::to_double(p.x())); xy.push_back(CGAL::to_double(p.y())); }
+    put(vertices_, xy.data(), xy.size() * sizeof(double));
+    next_vertex_ += n;
     recent_keys_[id] = w.keys();
-    for(Key k : wanted_[id]) numbers_.emplace(k, number_in(id, k));
-    wanted_.erase(id);
-    // the vertices of other windows, by key
-    std::unordered_map<Key, std::size_t> foreign_owner;
-    for(const auto& [k, p] : w.foreign_vertices()) foreign_owner.emplace(k, owner(p));
-    for(const Triangle& t : w.triangles()) {
-      std::size_t last = id;
-      for(Key k : t)
-        if(auto f = foreign_owner.find(k); f != foreign_owner.end()) last = (std::max)(last, f->second);
-      if(last == id) {
-        write_face(t, [&](Key k) {
-          auto f = foreign_owner.find(k);
-          return f == foreign_owner.end() ? number_in(id, k) : number_in(f->second, k);
-        });
-      } else {
-        for(Key k : t)
-          if(auto f = foreign_owner.find(k); f != foreign_owner.end() && f->second > id) wanted_[f->second].push_back(k);
-        // the vertices in windows already written are numbered now, while their keys are at hand
-        for(Key k : t) {
-          auto f = foreign_owner.find(k);
-          const std::size_t o = f == foreign_owner.end() ? id : f->second;
-          if(o <= id) numbers_.emplace(k, number_in(o, k));
-        }
-        pending_[last].push_back(t);
+    if(auto it = wanted_.find(id); it != wanted_.end()) {
+      for(Key k : it->second) numbers_.emplace(k, number_in(id, k));
+      wanted_.erase(it);
+    }
+    // the number of each of the window's vertices (its own, then the others):
+    // known for those of windows written, awaited for the others
+    constexpr std::uint64_t awaited = std::numeric_limits<std::uint64_t>::max();
+    const auto& foreign = w.foreign_vertices();
+    std::vector<std::uint64_t> number(n + foreign.size());
+    std::vector<std::size_t> owner_of(foreign.size());
+    for(std::size_t i = 0; i < n; ++i) number[i] = offsets_[id] + i;
+    for(std::size_t j = 0; j < foreign.size(); ++j) {
+      owner_of[j] = owner(foreign[j].second);
+      number[n + j] = owner_of[j] < id ? number_in(owner_of[j], foreign[j].first) : awaited;
+    }
+    std::vector<unsigned char> records;
+    records.reserve(w.triangles().size() * (wide_ ? 25 : 13));
+    for(std::size_t t = 0; t < w.triangles().size(); ++t) {
+      const auto& local = w.triangle_indices()[t];
+      if(number[local[0]] != awaited && number[local[1]] != awaited && number[local[2]] != awaited) {
+        encode_face({{number[local[0]], number[local[1]], number[local[2]]}}, records);
+        continue;
       }
+      std::size_t last = id;
+      for(int i = 0; i < 3; ++i) {
+        const Key k = w.triangles()[t][std::size_t(i)];
+        if(number[local[i]] != awaited) numbers_.emplace(k, number[local[i]]);
+        else {
+          const std::size_t o = owner_of[local[i] - n];
+          wanted_[o].push_back(k);
+          last = (std::max)(last, o);
+        }
+      }
+      pending_[last].push_back(w.triangles()[t]);
     }
     if(auto p = pending_.find(id); p != pending_.end()) {
-      for(const Triangle& t : p->second) write_face(t, [&](Key k) { return numbers_.at(k); });
+      for(const Triangle& t : p->second) encode_face({{numbers_.at(t[0]), numbers_.at(t[1]), numbers_.at(t[2])}}, records);
       pending_.erase(p);
     }
+    put(faces_, records.data(), records.size());
     // the row below the next window stays; older ones are sampled again if needed
     while(!recent_keys_.empty() && recent_keys_.begin()->first + kx_ + 1 < id) recent_keys_.erase(recent_keys_.begin());
   }
 
-  template <class Number>
-  void write_face(const Triangle& t, const Number& number)
+  void encode_face(const std::array<std::uint64_t, 3>& v, std::vector<unsigned char>& records)
   {
-    unsigned char record[1 + 3 * 8];
-    record[0] = 3;
-    std::size_t size = 1;
-    for(Key k : t) {
-      const std::uint64_t v = number(k);
-      if(wide_) { std::memcpy(record + size, &v, 8); size += 8; }
-      else {
-        if(v > 0xffffffffu) throw std::length_error("streamed PLY: more vertices than 32-bit indices hold");
-        const std::uint32_t u = std::uint32_t(v);
-        std::memcpy(record + size, &u, 4); size += 4;
-      }
+    records.push_back(3);
+    for(std::uint64_t i : v) {
+      if(!wide_ && i > 0xffffffffu) throw std::length_error("streamed PLY: more vertices than 32-bit indices hold");
+      const std::uint32_t narrow = std::uint32_t(i);
+      const unsigned char* bytes = wide_ ? reinterpret_cast<const unsigned char*>(&i)
+                                         : reinterpret_cast<const unsigned char*>(&narrow);
+      records.insert(records.end(), bytes, bytes + (wide_ ? 8 : 4));
     }
-    put(faces_, record, size);
     ++faces_written_;
   }
 
+  // Appends the faces to the vertices, in the kernel where it can, and
+  // writes the counts into the header.
   void finish(Temporary_file& vertices, Temporary_file& faces)
   {
-    if(std::fflush(faces.file) != 0 || std::fseek(faces.file, 0, SEEK_SET) != 0)
+    if(std::fflush(faces.file) != 0 || std::fflush(vertices.file) != 0 || std::fseek(faces.file, 0, SEEK_SET) != 0)
       throw std::runtime_error(std::string("cannot write the mesh: ") + std::strerror(errno));
+    bool copied = false;
+#ifdef __linux__
+    loff_t from = 0;
+    for(ssize_t got; (got = copy_file_range(fileno(faces.file), &from, fileno(vertices.file), nullptr, std::size_t(1) << 30, 0)) != 0;) {
+      if(got < 0) break;  // not on this file system: copied by hand from `from` on
+      copied = true;
+    }
+    if(copied && std::fseek(vertices.file, 0, SEEK_END) != 0) throw std::runtime_error("cannot write the mesh");
+    if(std::fseek(faces.file, long(from), SEEK_SET) != 0) throw std::runtime_error("cannot read the mesh's faces back");
+#endif
     std::vector<char> buffer(std::size_t(1) << 22);
     for(std::size_t got; (got = std::fread(buffer.data(), 1, buffer.size(), faces.file)) > 0;) put(vertices.file, buffer.data(), got);
     if(std::ferror(faces.file)) throw std::runtime_error("cannot read the mesh's faces back");

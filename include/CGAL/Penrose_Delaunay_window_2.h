@@ -18,6 +18,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <stdexcept>
 #include <utility>
 #include <vector>
@@ -134,6 +135,10 @@ public:
   /// their keys, by increasing key: the windows that own them give their
   /// numbers.
   const std::vector<std::pair<Key, Point_2>>& foreign_vertices() const { return foreign_; }
+  /// The triangles of `triangles()`, in the same order, as indices: `i` is
+  /// `points()[i]` below `points().size()`, and `foreign_vertices()[i -
+  /// points().size()]` beyond; for drivers that number the vertices.
+  const std::vector<std::array<std::uint32_t, 3>>& triangle_indices() const { return indices_; }
   /// The margin that the certificate accepted.
   double margin() const { return margin_; }
   /// How many times the window was triangulated (1, unless the margin grew).
@@ -202,6 +207,10 @@ private:
       keys_.push_back(k);
       points_.push_back(point(m.points[v]));
     }
+    // each mesh vertex's index among the window's (mine, then foreign), once known
+    constexpr std::uint32_t unknown = std::numeric_limits<std::uint32_t>::max();
+    std::vector<std::uint32_t> local(m.points.size(), unknown);
+    for(std::size_t i = 0; i < mine.size(); ++i) local[mine[i].second] = std::uint32_t(i);
     std::vector<std::pair<Key, Index>> foreign;
     for(Index f = 0; f < m.faces.size(); ++f) {
       if(!m.face_alive[f]) continue;
@@ -210,12 +219,20 @@ private:
       const internal::Penrose::Circumcircle& cc = circles[f];
       if(!cc.is_finite() || !own.contains(cc.x, cc.y)) continue;
       triangles_.push_back({{w.key[v[0]], w.key[v[1]], w.key[v[2]]}});
+      indices_.push_back({{v[0], v[1], v[2]}});  // mesh vertices for now
       for(Index u : v)
-        if(!inside(u)) foreign.emplace_back(w.key[u], u);
+        if(local[u] == unknown) {
+          local[u] = unknown - 1;  // noted once
+          foreign.emplace_back(w.key[u], u);
+        }
     }
     std::sort(foreign.begin(), foreign.end());
-    foreign.erase(std::unique(foreign.begin(), foreign.end()), foreign.end());
-    for(const auto& [k, v] : foreign) foreign_.emplace_back(k, point(m.points[v]));
+    for(std::size_t i = 0; i < foreign.size(); ++i) {
+      foreign_.emplace_back(foreign[i].first, point(m.points[foreign[i].second]));
+      local[foreign[i].second] = std::uint32_t(mine.size() + i);
+    }
+    for(auto& t : indices_)
+      for(auto& v : t) v = local[v];
   }
 
   Point_2 point(const internal::Penrose::Flat_mesh::Point& p) const
@@ -228,6 +245,7 @@ private:
   std::vector<Key> keys_;
   std::vector<Triangle> triangles_;
   std::vector<std::pair<Key, Point_2>> foreign_;
+  std::vector<std::array<std::uint32_t, 3>> indices_;
   double margin_ = 0.;
   int attempts_ = 0;
   bool repaired_by_insertion_ = false;

@@ -217,6 +217,25 @@ struct Ply_reader
   }
 };
 
+// The points on the boundary of the convex hull, those inside its edges
+// included, as Delaunay_triangulation_2 counts them (the degree of its
+// infinite vertex): Andrew's monotone chain, turning only at strict turns.
+std::size_t points_on_hull(std::vector<K2::Point_2> p)
+{
+  std::sort(p.begin(), p.end());
+  p.erase(std::unique(p.begin(), p.end()), p.end());
+  if(p.size() < 3) return p.size();
+  auto chain = [&](auto begin, auto end) {
+    std::vector<K2::Point_2> c;
+    for(auto it = begin; it != end; ++it) {
+      while(c.size() >= 2 && CGAL::orientation(c[c.size() - 2], c.back(), *it) == CGAL::RIGHT_TURN) c.pop_back();
+      c.push_back(*it);
+    }
+    return c.size() - 1;  // the last point starts the other chain
+  };
+  return chain(p.begin(), p.end()) + chain(p.rbegin(), p.rend());
+}
+
 int check_delaunay(const std::string& file, const double* window)
 {
   Ply_reader ply(file);
@@ -254,15 +273,15 @@ int check_delaunay(const std::string& file, const double* window)
     if(CGAL::orientation(points[f[0]], points[f[1]], points[f[2]]) != CGAL::LEFT_TURN) ++not_ccw;
     if(!found.insert(rotated(f)).second) ++twice;
   }
-  const std::size_t hull = window ? 0 : dt.degree(dt.infinite_vertex());
+  const std::size_t hull = window ? points_on_hull(points) : dt.degree(dt.infinite_vertex());
   std::size_t missing = 0;
   for(const Face& f : reference) missing += found.count(f) == 0;
   const std::size_t extra = found.size() + missing - reference.size();
   std::cout << points.size() << " points, " << ply.faces << " triangles in the file, " << found.size()
             << " checked: " << missing << " of CGAL's missing, " << extra << " not CGAL's, " << twice << " twice, "
             << not_ccw << " clockwise";
-  const bool count_holds = window || ply.faces == 2 * points.size() - hull - 2;
-  if(!window) std::cout << "; 2N - h - 2 = " << 2 * points.size() - hull - 2;
+  const bool count_holds = ply.faces == 2 * points.size() - hull - 2;
+  std::cout << "; 2N - h - 2 = " << 2 * points.size() - hull - 2;
   std::cout << "\n";
   return missing || extra || twice || not_ccw || !count_holds ? 1 : 0;
 }
