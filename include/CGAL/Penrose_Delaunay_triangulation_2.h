@@ -118,8 +118,8 @@ class Penrose_Delaunay_triangulation_2
   typedef Delaunay_triangulation_2<Gt, Tds> Base;
 
 #if !defined(CGAL_LINKED_WITH_TBB)
-  CGAL_static_assertion_msg(!(std::is_convertible<ConcurrencyTag, Parallel_tag>::value),
-                            "Parallel_tag is enabled but TBB is unavailable.");
+  static_assert(!(std::is_convertible<ConcurrencyTag, Parallel_tag>::value),
+                "Parallel_tag is enabled but TBB is unavailable.");
 #endif
 
 public:
