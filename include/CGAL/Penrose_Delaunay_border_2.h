@@ -49,7 +49,9 @@ leave the region, and all those around their vertices) misses the inner
 rectangle that the strip leaves out, and every corner of that rectangle
 lies strictly inside every hull edge, so that the samples left out change
 neither the Voronoi diagram outside the region nor the hull. Where it
-fails, the strip is made twice as wide, up to the whole region.
+fails, the strip is made twice as wide along the side nearest to what
+failed, up to the whole region. Each side's first width is three spacings
+of the samples where the density is lowest near it.
 
 \tparam Traits the traits of the sampler.
 */
@@ -78,8 +80,9 @@ public:
     const double size = (std::max)(region_.x1 - region_.x0, region_.y1 - region_.y0);
     const double magnitude = (std::max)({std::abs(region_.x0), std::abs(region_.x1), std::abs(region_.y0), std::abs(region_.y1)});
     tolerance_ = 1e-12 * (size + magnitude);
-    width_ = first_width(c, sampler.density_scale(), size);
-    while(!attempt(sampler)) width_ *= 2.;
+    for(int side = 0; side < 4; ++side) width_[side] = first_width(c, sampler.density_scale(), side, size);
+    while(attempt(sampler))
+      for(int side = 0; side < 4; ++side) width_[side] = (std::max)(width_[side], needed_[side]);
   }
   /// @}
 
@@ -95,8 +98,9 @@ public:
   /// The vertices of those triangles and of the hull, with their keys, by
   /// increasing key: the windows that own them give their numbers.
   const std::vector<std::pair<Key, Point_2>>& vertices() const { return vertices_; }
-  /// The width of the strip that the certificate accepted.
-  double width() const { return width_; }
+  /// The width of the strip that the certificate accepted along each side
+  /// of the region: left, bottom, right, top.
+  const std::array<double, 4>& widths() const { return width_; }
   /// How many times the strip was triangulated.
   int attempts() const { return attempts_; }
   /// @}
@@ -114,27 +118,46 @@ private:
   typedef typename Dt::Face_handle Face_handle;
   typedef internal::Penrose::Box Box;
 
-  static double first_width(const internal::Penrose::Sampling_context& c, double scale, double size)
+  // Three spacings of the samples where they are sparsest along a side
+  // (0 left, 1 bottom, 2 right, 3 top), from probes within an eighth of the
+  // region of it: a side where the density vanishes gets a wider strip at
+  // once.
+  static double first_width(const internal::Penrose::Sampling_context& c, double scale, int side, double size)
   {
-    using internal::Penrose::probe_density;
-    double least = std::numeric_limits<double>::infinity();
-    for(const auto& p : {probe_density(c, scale, c.xmin(), c.ymin(), c.xmax(), c.ymin()),
-                         probe_density(c, scale, c.xmin(), c.ymax(), c.xmax(), c.ymax()),
-                         probe_density(c, scale, c.xmin(), c.ymin(), c.xmin(), c.ymax()),
-                         probe_density(c, scale, c.xmax(), c.ymin(), c.xmax(), c.ymax())})
-      least = (std::min)(least, p.least_positive);
-    return least < std::numeric_limits<double>::infinity() ? 3. / std::sqrt(least) : size;
+    const double d = size / 8.;
+    const double x0 = c.xmin(), y0 = c.ymin(), x1 = c.xmax(), y1 = c.ymax();
+    const internal::Penrose::Density_probes p =
+      side == 0 ? internal::Penrose::probe_density(c, scale, x0, y0, (std::min)(x0 + d, x1), y1)
+      : side == 1 ? internal::Penrose::probe_density(c, scale, x0, y0, x1, (std::min)(y0 + d, y1))
+      : side == 2 ? internal::Penrose::probe_density(c, scale, (std::max)(x1 - d, x0), y0, x1, y1)
+                  : internal::Penrose::probe_density(c, scale, x0, (std::max)(y1 - d, y0), x1, y1);
+    return p.spacing(3., size);
   }
 
   bool covers_region() const
   {
-    return 2. * width_ >= (std::min)(region_.x1 - region_.x0, region_.y1 - region_.y0);
+    return width_[0] + width_[2] >= region_.x1 - region_.x0 || width_[1] + width_[3] >= region_.y1 - region_.y0;
   }
 
   // The rectangle that the strip leaves out, closed: the samples outside
   // the strip lie in it.
-  Box inner() const { return {region_.x0 + width_, region_.y0 + width_, region_.x1 - width_, region_.y1 - width_}; }
+  Box inner() const
+  {
+    return {region_.x0 + width_[0], region_.y0 + width_[1], region_.x1 - width_[2], region_.y1 - width_[3]};
+  }
 
+  // Notes that the strip must be twice as wide along the side nearest to
+  // (x, y). (Growing it to the depth that a failing disk reaches makes it
+  // wider than needed near a corner, where the disks are widest.)
+  void grow_near(double x, double y)
+  {
+    const double d[4] = {x - region_.x0, y - region_.y0, region_.x1 - x, region_.y1 - y};
+    const int side = int(std::min_element(d, d + 4) - d);
+    needed_[side] = 2. * width_[side];
+  }
+
+  // Triangulates the strip and certifies it; returns false, with the
+  // widths needed_ set, where it must grow.
   bool attempt(const Penrose_importance_sampler<Traits>& sampler)
   {
     ++attempts_;
@@ -160,9 +183,9 @@ private:
                                      CGAL::to_double(t.compute_y_2_object()(s.point))),
                           Vertex_data{s.key, false});
     Dt dt(points.begin(), points.end());
-    if(!covers_region() && !certified(dt)) return false;
+    if(!covers_region() && !certified(dt)) return true;
     collect(dt);
-    return true;
+    return false;
   }
 
   internal::Penrose::Circumcircle circle(Face_handle f) const
@@ -171,9 +194,15 @@ private:
     return internal::Penrose::canonical_circumcircle(p(0), p(1), p(2));
   }
 
-  bool certified(Dt& dt) const
+  // Whether the strip's triangulation holds; where not, needed_ says how
+  // wide the strip must grow, from all that fails.
+  bool certified(Dt& dt)
   {
-    if(dt.dimension() < 2) return false;
+    needed_ = width_;
+    if(dt.dimension() < 2) {
+      for(double& w : needed_) w *= 2.;
+      return false;
+    }
     // the vertices whose Voronoi cells may reach out of the region
     const double eps = 1e-9 * (region_.x1 - region_.x0 + region_.y1 - region_.y0);
     for(auto f = dt.all_faces_begin(); f != dt.all_faces_end(); ++f) {
@@ -188,6 +217,7 @@ private:
         for(int i = 0; i < 3; ++i)
           if(!dt.is_infinite(f->vertex(i))) f->vertex(i)->info().seen_from_outside = true;
     }
+    bool holds = true;
     const Box in = inner();
     for(auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v) {
       if(!v->info().seen_from_outside) continue;
@@ -195,7 +225,11 @@ private:
       do {
         if(!dt.is_infinite(f) && !f->info()) {
           f->info() = 1;
-          if(disk_meets(f, in)) return false;
+          if(disk_meets(f, in)) {
+            holds = false;
+            const K::Point_2 g = CGAL::centroid(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point());
+            grow_near(g.x(), g.y());
+          }
         }
       } while(++f != done);
     }
@@ -207,9 +241,12 @@ private:
       const K::Point_2 &a = inside->vertex(Dt::ccw(i))->point(), &b = inside->vertex(Dt::cw(i))->point();
       for(double x : {in.x0, in.x1})
         for(double y : {in.y0, in.y1})
-          if(K::Orientation_2()(a, b, K::Point_2(x, y)) != LEFT_TURN) return false;
+          if(K::Orientation_2()(a, b, K::Point_2(x, y)) != LEFT_TURN) {
+            holds = false;
+            grow_near(0.5 * (a.x() + b.x()), 0.5 * (a.y() + b.y()));
+          }
     }
-    return true;
+    return holds;
   }
 
   // Whether the closed disk of f's circumcircle meets the closed box `b`:
@@ -266,7 +303,8 @@ private:
 
   Traits traits_;
   Box region_;
-  double tolerance_ = 0., width_ = 0.;
+  double tolerance_ = 0.;
+  std::array<double, 4> width_, needed_;
   int attempts_ = 0;
   std::vector<Triangle> triangles_;
   std::vector<Key> hull_;
