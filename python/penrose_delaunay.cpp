@@ -38,6 +38,7 @@
 #include <stdexcept>
 #include <string>
 #include <tuple>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -416,6 +417,7 @@ struct Piece
   std::vector<double> foreign_xy;
   std::vector<std::uint64_t> foreign_keys;
   std::vector<std::uint64_t> hull;
+  std::vector<std::uint32_t> local;  // the triangles as indices into the samples, then the foreign vertices
 };
 
 template <class Pairs>
@@ -441,13 +443,22 @@ Piece window_piece(const Request& r, const Density& d, bool border, double margi
     for(const Point& q : part.points()) { p.xy.push_back(q.x()); p.xy.push_back(q.y()); }
     p.keys = part.keys();
     for(const auto& t : part.triangles()) p.triangles.insert(p.triangles.end(), t.begin(), t.end());
+    for(const auto& t : part.triangle_indices()) p.local.insert(p.local.end(), t.begin(), t.end());
     add_foreign(p, part.foreign_vertices());
   }
   if(border) {
     const CGAL::Penrose_Delaunay_border_2<K> part(*sampler);
-    for(const auto& t : part.triangles()) p.triangles.insert(p.triangles.end(), t.begin(), t.end());
+    // the border's vertices among the window's samples and foreign vertices, or foreign to both
+    std::unordered_map<std::uint64_t, std::uint32_t> index;
+    for(std::size_t i = 0; i < p.keys.size(); ++i) index.emplace(p.keys[i], std::uint32_t(i));
+    for(std::size_t j = 0; j < p.foreign_keys.size(); ++j) index.emplace(p.foreign_keys[j], std::uint32_t(p.keys.size() + j));
+    for(const auto& [k, q] : part.vertices())
+      if(index.emplace(k, std::uint32_t(p.keys.size() + p.foreign_keys.size())).second) add_foreign(p, std::array{std::make_pair(k, q)});
+    for(const auto& t : part.triangles()) {
+      p.triangles.insert(p.triangles.end(), t.begin(), t.end());
+      for(std::uint64_t k : t) p.local.push_back(index.at(k));
+    }
     p.hull = part.hull();
-    add_foreign(p, part.vertices());
   }
   return p;
 }
@@ -483,7 +494,7 @@ py::tuple window_triangles(const py::object& density, const std::optional<std::a
   const std::size_t h = p.hull.size();
   return py::make_tuple(t[0], t[1], t[2], to_numpy(std::move(p.foreign_xy), others, 2),
                         to_numpy(std::move(p.foreign_keys), others, 1).reshape({others}),
-                        to_numpy(std::move(p.hull), h, 1).reshape({h}));
+                        to_numpy(std::move(p.hull), h, 1).reshape({h}), to_numpy(std::move(p.local), triangles, 3));
 }
 
 double density_integral(const py::object& density, const std::optional<std::array<double, 4>>& region)
@@ -586,9 +597,10 @@ integral: the integral of the density over the region, as
 margin: the first margin around the window, in the region's units (0: from
    the density); it grows where the triangles cannot be certified.
 foreign: also return, after those three, the other vertices of the
-   triangles (points (K, 2), keys (K,)) and the keys of the convex hull,
-   counter-clockwise, where the border was computed: what a driver needs to
-   number the vertices.
+   triangles (points (K, 2), keys (K,)), the keys of the convex hull,
+   counter-clockwise, where the border was computed, and the triangles as
+   indices (M, 3) uint32 into the window's points followed by those K
+   vertices: what a driver needs to number the vertices.
 The other arguments are those of `sample()`.)doc");
 
   m.def("density_integral", &penrose_python::density_integral, "density"_a, "region"_a = py::none(),

@@ -6,12 +6,14 @@ a dask.distributed cluster, into one zarr store.
 Each window of a kx x ky grid over the region is triangulated alone by
 `window_triangles()` on a worker (the border's triangles by one more task),
 with no message between windows: a window's triangles are exactly those of
-the whole triangulation whose circumcentres it holds. A second round of
-tasks numbers the vertices (window after window, by key within a window)
-and writes each window's rows into the store; only the windows' keys travel
-between workers, not their triangles.
+the whole triangulation whose circumcentres it holds. The vertices are
+numbered window after window, by key within a window: each window ranks the
+keys of its samples that the others' triangles use, and a last round of
+tasks writes each window's rows into the store. Only those keys and ranks
+travel between workers, not the windows' samples or triangles.
 """
 
+import numcodecs
 import numpy as np
 import zarr
 from distributed import Client, LocalCluster, wait
@@ -20,7 +22,7 @@ from . import _core
 
 __all__ = ["triangulate"]
 
-_CHUNK_ROWS = 1 << 20
+_CHUNK_ROWS = 1 << 16  # small enough that few chunks are shared by two windows, whose writes then wait on a lock
 
 
 def _cuts(lo, hi, k):
@@ -35,56 +37,58 @@ def _owner(cuts, values):
 
 def _piece(density, region, n, scale, correction, integral, window):
     """A window's part (window None: the border's), with what numbering its vertices needs."""
-    points, keys, triangles, foreign_points, foreign_keys, hull = _core.window_triangles(
+    points, keys, _, foreign_points, foreign_keys, hull, local = _core.window_triangles(
         density, region=region, n=n, window=window, scale=scale, correction=correction,
         integral=integral, border=window is None, foreign=True)
-    return {"points": points, "keys": keys, "triangles": triangles,
+    return {"points": points, "keys": keys, "local": local,
             "foreign_points": foreign_points, "foreign_keys": foreign_keys, "hull": hull}
 
 
-def _summary(piece, cx, cy):
-    """Counts, and the windows that own the piece's other vertices."""
+def _owners(piece, cx, cy):
     fp = piece["foreign_points"]
-    owners = _owner(cx, fp[:, 0]) + (len(cx) - 1) * _owner(cy, fp[:, 1])
-    return len(piece["keys"]), len(piece["triangles"]), sorted(set(owners.tolist())), len(piece["hull"])
+    return _owner(cx, fp[:, 0]) + (len(cx) - 1) * _owner(cy, fp[:, 1])
 
 
-def _keys(piece):
-    return piece["keys"]
+def _summary(piece, cx, cy):
+    """Counts, and the keys of the piece's other vertices by the window that holds them."""
+    owner, fk = _owners(piece, cx, cy), piece["foreign_keys"]
+    wanted = {int(w): fk[owner == w] for w in np.unique(owner)}
+    return len(piece["keys"]), len(piece["local"]), wanted, len(piece["hull"])
 
 
-def _numbers(keys, offset, wanted):
-    """The numbers of the keys `wanted` among a window's sorted `keys`."""
+def _ranks(piece, wanted):
+    """The ranks of the keys `wanted` among the window's own, sorted."""
+    keys = piece["keys"]
     at = np.searchsorted(keys, wanted)
     if np.any(at >= len(keys)) or np.any(keys[np.minimum(at, len(keys) - 1)] != wanted):
         raise RuntimeError("penrose_delaunay.dask: a vertex is missing from the window that holds it")
-    return offset + at
+    return at
 
 
-def _write(piece, offset, triangle_offset, owners, cx, cy, store):
-    """Numbers the piece's vertices and writes its rows; `owners` maps a window to (keys, offset)."""
+def _write(piece, offset, triangle_offset, numbers_by_owner, cx, cy, store):
+    """Writes the piece's rows; `numbers_by_owner` numbers its other vertices, for each window that
+    holds some, in the order of _summary()."""
+    # one thread a worker, as the cluster was told: Blosc would start more
+    numcodecs.blosc.use_threads = False
     keys = piece["keys"]
-    fp, fk = piece["foreign_points"], piece["foreign_keys"]
-    owner = _owner(cx, fp[:, 0]) + (len(cx) - 1) * _owner(cy, fp[:, 1])
-    foreign_numbers = np.empty(len(fk), dtype=np.int64)
-    for w in np.unique(owner):
-        sel = owner == w
-        owner_keys, owner_offset = owners[int(w)]
-        foreign_numbers[sel] = _numbers(owner_keys, owner_offset, fk[sel])
-    all_keys = np.concatenate([keys, fk])
-    all_numbers = np.concatenate([offset + np.arange(len(keys), dtype=np.int64), foreign_numbers])
-    order = np.argsort(all_keys, kind="stable")
-    tri = piece["triangles"]
-    triangles = all_numbers[order][np.searchsorted(all_keys[order], tri)].astype(np.int64)
+    owner = _owners(piece, cx, cy)
+    foreign_numbers = np.empty(len(owner), dtype=np.int64)
+    for o, numbers in numbers_by_owner.items():
+        foreign_numbers[owner == o] = numbers
+    numbers = np.concatenate([offset + np.arange(len(keys), dtype=np.int64), foreign_numbers])
+    tri = piece["local"]
     sync = zarr.ProcessSynchronizer(store + ".sync")
     root = zarr.open_group(store, mode="r+", synchronizer=sync)
     if len(keys):
         root["points"][offset:offset + len(keys)] = piece["points"]
         root["keys"][offset:offset + len(keys)] = keys
     if len(tri):
-        root["triangles"][triangle_offset:triangle_offset + len(tri)] = triangles
+        root["triangles"][triangle_offset:triangle_offset + len(tri)] = numbers[tri]
     if len(piece["hull"]):
-        root["hull"][:] = all_numbers[order][np.searchsorted(all_keys[order], piece["hull"])]
+        # the hull's vertices are among the piece's others (the border's piece has no samples of its own)
+        fk = piece["foreign_keys"]
+        order = np.argsort(fk)
+        root["hull"][:] = foreign_numbers[order][np.searchsorted(fk[order], piece["hull"])]
     return len(tri)
 
 
@@ -128,8 +132,9 @@ def triangulate(density, region=None, n=None, windows=(4, 4), store=None, client
     try:
         args = (density, region, n, scale, correction, integral)
         boxes = [(cx[i], cy[j], cx[i + 1], cy[j + 1]) for j in range(ky) for i in range(kx)]
-        pieces = [client.submit(_piece, *args, box, pure=False) for box in boxes]
-        pieces.append(client.submit(_piece, *args, None, pure=False))
+        # the border first, so that it does not run alone at the end
+        border = client.submit(_piece, *args, None, pure=False, priority=1)
+        pieces = [client.submit(_piece, *args, box, pure=False) for box in boxes] + [border]
         summaries = client.gather([client.submit(_summary, p, cx, cy) for p in pieces])
         counts = np.array([s[0] for s in summaries], dtype=np.int64)
         triangle_counts = np.array([s[1] for s in summaries], dtype=np.int64)
@@ -140,17 +145,28 @@ def triangulate(density, region=None, n=None, windows=(4, 4), store=None, client
             raise RuntimeError(f"penrose_delaunay.dask: {triangles} triangles for {points} points and a hull of "
                                f"{hull}, not 2N - h - 2")
         root = zarr.open_group(store, mode="w")
-        root.zeros("points", shape=(points, 2), chunks=(_CHUNK_ROWS, 2), dtype=np.float64)
-        root.zeros("keys", shape=(points,), chunks=(_CHUNK_ROWS,), dtype=np.uint64)
-        root.zeros("triangles", shape=(triangles, 3), chunks=(_CHUNK_ROWS, 3), dtype=np.int64)
+        fast = numcodecs.Blosc(cname="lz4", clevel=1, shuffle=numcodecs.Blosc.SHUFFLE)
+        root.zeros("points", shape=(points, 2), chunks=(_CHUNK_ROWS, 2), dtype=np.float64, compressor=fast)
+        root.zeros("keys", shape=(points,), chunks=(_CHUNK_ROWS,), dtype=np.uint64, compressor=fast)
+        root.zeros("triangles", shape=(triangles, 3), chunks=(_CHUNK_ROWS, 3), dtype=np.int64, compressor=fast)
         root.zeros("hull", shape=(hull,), chunks=(max(hull, 1),), dtype=np.int64)
         root.attrs.update({"region": list(region), "windows": [kx, ky], "integral": integral})
-        keys = [client.submit(_keys, p) for p in pieces[:-1]]
-        writes = []
-        for w, piece in enumerate(pieces):
-            owners = {o: (keys[o], int(offsets[o])) for o in summaries[w][2]}
-            writes.append(client.submit(_write, piece, int(offsets[w]), int(triangle_offsets[w]), owners,
-                                        cx, cy, store, pure=False))
+        # the other vertices' numbers: each window ranks the keys that the others want of it
+        wanted = {}
+        for w, summary in enumerate(summaries):
+            for o, k in summary[2].items():
+                wanted.setdefault(o, []).append((w, k))
+        ranks = {o: client.submit(_ranks, pieces[o], np.concatenate([k for _, k in asked]))
+                 for o, asked in wanted.items()}
+        ranks = dict(zip(ranks.keys(), client.gather(list(ranks.values()))))
+        foreign = [dict() for _ in pieces]
+        for o, asked in wanted.items():
+            start = 0
+            for w, k in asked:
+                foreign[w][o] = offsets[o] + ranks[o][start:start + len(k)]
+                start += len(k)
+        writes = [client.submit(_write, piece, int(offsets[w]), int(triangle_offsets[w]), foreign[w], cx, cy, store,
+                                pure=False) for w, piece in enumerate(pieces)]
         wait(writes)
         client.gather(writes)
     finally:
