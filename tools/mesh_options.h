@@ -9,11 +9,19 @@
 
 #include <CGAL/Penrose_Delaunay_triangulation_2/IO/height_field_io.h>
 
+#include "tiles.h"
+
+#include <sys/stat.h>
+
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
+#include <map>
 #include <stdexcept>
 #include <string>
+#include <system_error>
 #include <utility>
+#include <vector>
 
 namespace penrose_tools {
 
@@ -107,6 +115,11 @@ inline const char* const usage_text =
   "                \"fit_seconds\". The tile tree is\n"
   "                sampled while the triangulation is derived from it: sample_seconds is the\n"
   "                sampler's preparation, triangulate_seconds the rest\n"
+  "  Each output is written to a temporary file beside it, then renamed over it\n"
+  "  once complete: a run that fails or is killed leaves the file as it was. An\n"
+  "  output that is the input or another output (through ./, a symbolic or a\n"
+  "  hard link too) is refused before anything is read; devices such as\n"
+  "  /dev/null are not checked.\n"
   "\n"
   "tiles:\n"
   "  --tiles K     cut the region into K x K tiles and write one mesh each,\n"
@@ -230,9 +243,14 @@ inline Options parse(int argc, const char* const* argv)
       return argv[i + k];
     };
     auto text = [&](std::string& s) { s = value(); ++i; };
+    // a file name: empty, it was taken for no file at all
+    auto file = [&](std::string& s) {
+      text(s);
+      if(s.empty()) usage_error(a + " needs a file name, not ''");
+    };
     if(a == "--help" || a == "-h") { o.help = true; return o; }
     else if(a == "--density") { text(o.density); have_density = true; }
-    else if(a == "--terrain") text(o.terrain);
+    else if(a == "--terrain") file(o.terrain);
     else if(a == "--points") { o.points = number(value(), a); have_points = true; ++i; }
     else if(a == "--scale") { o.scale = number(value(), a); have_scale = true; ++i; }
     else if(a == "--region") { for(int k = 0; k < 4; ++k) o.region[k] = number(value(k + 1), a); i += 4; o.region_given = true; }
@@ -248,12 +266,12 @@ inline Options parse(int argc, const char* const* argv)
     else if(a == "--gradient") o.gradient = true;
     else if(a == "--height-scale") { o.height_scale = number(value(), a); ++i; }
     else if(a == "--viewer") { for(int k = 0; k < 2; ++k) o.viewer[k] = number(value(k + 1), a); i += 2; o.viewer_given = true; }
-    else if(a == "--out-points") text(o.out_points);
-    else if(a == "--out-mesh") text(o.out_mesh);
-    else if(a == "--svg") text(o.svg);
-    else if(a == "--png") text(o.png);
-    else if(a == "--reconstruct") text(o.reconstruct);
-    else if(a == "--stats-json") text(o.stats_json);
+    else if(a == "--out-points") file(o.out_points);
+    else if(a == "--out-mesh") file(o.out_mesh);
+    else if(a == "--svg") file(o.svg);
+    else if(a == "--png") file(o.png);
+    else if(a == "--reconstruct") file(o.reconstruct);
+    else if(a == "--stats-json") file(o.stats_json);
     else if(a == "--max-pixels") { o.max_pixels = number(value(), a); ++i; }
     else if(a == "--tiles") { o.tiles = whole_number(value(), a, 1, 1024); ++i; }
     else if(a == "--streamed") o.streamed = true;
@@ -327,6 +345,55 @@ inline Options parse(int argc, const char* const* argv)
     o.boundary = true;
   }
   return o;
+}
+
+// What `path` names, to compare files: the device and inode of an existing
+// file, so that ./x, a symbolic link and a hard link are x; else the
+// absolute path, the links of its folders resolved. Empty for what is not a
+// regular file (/dev/null, a pipe), which outputs may share.
+inline std::string file_identity(const std::string& path)
+{
+  struct stat st;
+  if(::stat(path.c_str(), &st) == 0)
+    return S_ISREG(st.st_mode) ? std::to_string(st.st_dev) + ":" + std::to_string(st.st_ino) : std::string();
+  std::error_code error;
+  const std::filesystem::path absolute = std::filesystem::absolute(path, error);
+  return "path " + std::filesystem::weakly_canonical(absolute, error).string();
+}
+
+// Refuses, before anything is read, an output that is the input or another
+// output: the input would be lost, or an output overwritten by the next.
+// The tiles of --tiles, the only output then, are checked against the input.
+inline void check_files(const Options& o)
+{
+  std::vector<std::pair<std::string, std::string>> files;  // the option (and its value) and the file
+  if(!o.terrain.empty()) files.emplace_back("--terrain " + o.terrain, o.terrain);
+  if(o.density.rfind("image:", 0) == 0) files.emplace_back("--density " + o.density, o.density.substr(6));
+  const std::size_t inputs = files.size();
+  const std::pair<const char*, const std::string*> outputs[] = {
+    {"--out-points", &o.out_points}, {"--out-mesh", &o.out_mesh}, {"--svg", &o.svg}, {"--png", &o.png},
+    {"--reconstruct", &o.reconstruct}, {"--stats-json", &o.stats_json}};
+  for(const auto& [option, file] : outputs)
+    if(!file->empty() && !(o.tiles && file == &o.out_mesh)) files.emplace_back(option + (" " + *file), *file);
+  std::map<std::string, std::size_t> seen;
+  for(std::size_t k = 0; k < files.size(); ++k) {
+    const std::string id = file_identity(files[k].second);
+    if(id.empty()) continue;
+    const auto [at, first] = seen.emplace(id, k);
+    if(first) continue;
+    if(at->second < inputs) usage_error(files[k].first + " is the input file (" + files[at->second].first + ")");
+    usage_error(files[k].first + " and " + files[at->second].first + " are the same file");
+  }
+  if(!o.tiles || !inputs) return;
+  const std::string input = file_identity(files[0].second);
+  for(int j = 0; j < o.tiles; ++j)
+    for(int i = 0; i < o.tiles; ++i)
+      if(o.tile[0] < 0 || (i == o.tile[0] && j == o.tile[1])) {
+        const std::string tile = tile_file_name(o.out_mesh, i, j);
+        if(!input.empty() && file_identity(tile) == input)
+          usage_error("--out-mesh " + o.out_mesh + ": tile " + std::to_string(i) + " " + std::to_string(j) + ", " + tile
+                      + ", is the input file (" + files[0].first + ")");
+      }
 }
 
 } // namespace penrose_tools

@@ -14,6 +14,7 @@
 #include <CGAL/fit_terrain_heights.h>
 #include <CGAL/refine_terrain_by_greedy_insertion.h>
 #include <CGAL/Penrose_Delaunay_triangulation_2/IO/height_field_io.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/IO/internal/output_file.h>
 #include <CGAL/Penrose_Delaunay_triangulation_2/IO/read_rgb_image.h>
 #include <CGAL/Penrose_Delaunay_triangulation_2/IO/write_triangulation.h>
 
@@ -562,22 +563,14 @@ Quality measure(const Mesh& m, const Raster<T>& image, std::vector<double> at_ve
   return q;
 }
 
-// Closes `f`, opened to write `file`: a failed write or close (a full disk)
-// is an error naming the file.
-void close_written(FILE* f, const std::string& file)
-{
-  const bool failed = std::ferror(f) != 0;
-  if(std::fclose(f) != 0 || failed) throw std::runtime_error(file + ": write failed");
-}
-
 void write_points(const std::string& file, const Mesh& m, bool with_heights)
 {
-  FILE* f = std::fopen(file.c_str(), "w");
-  if(!f) throw std::runtime_error(file + ": cannot open for writing");
+  CGAL::IO::internal::Output_file out(file);
   for(std::size_t k = 0; k < m.points.size(); ++k)
-    if(with_heights) std::fprintf(f, "%.17g %.17g %.17g\n", m.points[k].x(), m.points[k].y(), m.vertex[k]->point().z());
-    else std::fprintf(f, "%.17g %.17g\n", m.points[k].x(), m.points[k].y());
-  close_written(f, file);
+    if(with_heights)
+      std::fprintf(out.stream(), "%.17g %.17g %.17g\n", m.points[k].x(), m.points[k].y(), m.vertex[k]->point().z());
+    else std::fprintf(out.stream(), "%.17g %.17g\n", m.points[k].x(), m.points[k].y());
+  out.commit();
 }
 
 void write_svg(const Options& o, const Input& in, const Mesh& m)
@@ -931,7 +924,10 @@ int main(int argc, char** argv)
     if(o.threads > 0) threads.emplace(tbb::global_control::max_allowed_parallelism, std::size_t(o.threads));
 #endif
     if(o.help) std::cout << penrose_tools::usage_text;
-    else run(o);
+    else {
+      penrose_tools::check_files(o);
+      run(o);
+    }
   } catch(const penrose_tools::Usage_error& e) {
     std::cerr << "penrose_mesh: " << e.what() << " (penrose_mesh --help lists the options)\n";
     return 2;

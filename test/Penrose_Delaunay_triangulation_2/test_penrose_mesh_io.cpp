@@ -9,6 +9,7 @@
 
 #include <CGAL/Penrose_Delaunay_triangulation_2.h>
 #include <CGAL/Penrose_Delaunay_triangulation_2/IO/height_field_io.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/IO/internal/output_file.h>
 #include <CGAL/Penrose_Delaunay_triangulation_2/IO/read_luminance_image.h>
 #include <CGAL/Penrose_Delaunay_triangulation_2/IO/read_rgb_image.h>
 #include <CGAL/Penrose_Delaunay_triangulation_2/IO/write_triangulation.h>
@@ -26,6 +27,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <functional>
 #include <set>
@@ -469,6 +471,66 @@ TEST(Mesh, WriterFailures)
   some.push_back(t.finite_vertices_begin());
   expect_failure([&](const std::string& f) { IO::write_triangulation(f, t, some); }, temp("partial.off"),
                  "not listed");
+}
+
+// The files beside `file` whose names start with '.' + its name: the temporary ones.
+std::vector<std::string> temporaries_of(const std::string& file)
+{
+  namespace fs = std::filesystem;
+  const std::string prefix = "." + fs::path(file).filename().string() + ".";
+  std::vector<std::string> found;
+  for(const auto& entry : fs::directory_iterator(fs::path(file).parent_path()))
+    if(entry.path().filename().string().rfind(prefix, 0) == 0) found.push_back(entry.path().string());
+  return found;
+}
+
+// A file is replaced only by a complete one: until commit(), the old file
+// stays; an Output_file destroyed without commit() (an exception while
+// writing) leaves no temporary file behind.
+TEST(Output, ReplacedOnlyWhenComplete)
+{
+  const std::string file = temp("out.txt");
+  write_file(file, "old\n");
+  {
+    IO::internal::Output_file out(file);
+    out.write("new, half");
+    EXPECT_EQ(read_file(file), "old\n");
+    EXPECT_EQ(temporaries_of(file).size(), 1u);
+  }
+  EXPECT_EQ(read_file(file), "old\n");
+  EXPECT_TRUE(temporaries_of(file).empty());
+  IO::internal::Output_file out(file);
+  out.write("new\n");
+  std::fprintf(out.stream(), "%d\n", 42);
+  out.commit();
+  EXPECT_EQ(read_file(file), "new\n42\n");
+  EXPECT_TRUE(temporaries_of(file).empty());
+}
+
+// Through a symbolic link, the file linked to is replaced and the link
+// kept; the permissions of the file replaced are kept.
+TEST(Output, LinksFollowedAndPermissionsKept)
+{
+  namespace fs = std::filesystem;
+  const std::string target = temp("target.txt"), link = temp("link.txt");
+  write_file(target, "old\n");
+  fs::permissions(target, fs::perms::owner_read | fs::perms::owner_write);
+  fs::remove(link);
+  fs::create_symlink(target, link);
+  IO::internal::write_bytes(link, "new\n");
+  EXPECT_TRUE(fs::is_symlink(link));
+  EXPECT_EQ(read_file(target), "new\n");
+  EXPECT_EQ(fs::status(target).permissions() & fs::perms::all, fs::perms::owner_read | fs::perms::owner_write);
+}
+
+// A device is written in place (a rename cannot replace it), and a failed
+// write names the file and its cause.
+TEST(Output, DevicesWrittenInPlace)
+{
+  IO::internal::write_bytes("/dev/null", "nothing\n");
+  EXPECT_TRUE(std::filesystem::is_character_file("/dev/null"));
+  expect_failure([](const std::string& f) { IO::internal::write_bytes(f, std::string(1 << 16, 'x')); }, "/dev/full",
+                 "cannot write (No space left on device)");
 }
 
 } // namespace

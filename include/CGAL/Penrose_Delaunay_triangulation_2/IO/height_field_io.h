@@ -10,6 +10,7 @@
 
 #include <CGAL/Penrose_Delaunay_triangulation_2/IO/internal/file_names.h>
 #include <CGAL/Penrose_Delaunay_triangulation_2/IO/internal/image_checks.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/IO/internal/output_file.h>
 
 #include <png.h>
 #include <stb/stb_image.h>
@@ -338,14 +339,6 @@ inline Height_field read_height_field(const std::string& file, std::size_t max_c
 }
 
 namespace internal {
-
-inline void write_bytes(const std::string& file, const std::string& bytes)
-{
-  std::ofstream out(file, std::ios::binary);
-  out.write(bytes.data(), std::streamsize(bytes.size()));
-  out.close();
-  if(!out) throw file_error(file, "cannot write");
-}
 
 // A height as a 16-bit sample, rounded and clamped to [0, 65535].
 inline std::uint16_t sample_16(double height)
