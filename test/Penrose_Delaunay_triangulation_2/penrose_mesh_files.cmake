@@ -142,3 +142,31 @@ if(NOT (outcome STREQUAL "killed" AND now STREQUAL old) AND NOT (outcome STREQUA
   message(FATAL_ERROR "SIGKILL while writing (${outcome}): points.xy is neither the old file nor the new one")
 endif()
 message(STATUS "SIGKILL: ${outcome}")
+
+# Readers never read without bound: devices, an endless pipe and endless
+# data after a small header end with status 1 in a few seconds at most,
+# under 100 MB of address space (the old reader held 2.2 GB after 4 s).
+function(run_bounded command expected)
+  execute_process(COMMAND sh -c "${command}" ${PENROSE_MESH} WORKING_DIRECTORY ${WORK}
+                  RESULT_VARIABLE rc ERROR_VARIABLE err)
+  if(NOT rc EQUAL 1 OR NOT err MATCHES "^penrose_mesh: [^\n]*${expected}[^\n]*\n$")
+    message(FATAL_ERROR "${command}: expected status 1 and one line matching '${expected}', got ${rc}: ${err}")
+  endif()
+endfunction()
+set(bounded "timeout 5 prlimit --as=100000000 \"$0\"")
+foreach(device /dev/zero /dev/urandom)
+  run_bounded("${bounded} --terrain ${device}" "${device}: ")
+  run_bounded("${bounded} --density image:${device}" "${device}: ")
+endforeach()
+run_bounded("yes | ${bounded} --terrain /dev/stdin" "/dev/stdin: cannot read as an image \\(not a PNG")
+run_bounded("yes | ${bounded} --density image:/dev/stdin" "/dev/stdin: cannot read as an image \\(not a PNG")
+# A grid of 12 x 10 cells followed by endless rows, through a named pipe.
+execute_process(COMMAND mkfifo ${WORK}/endless.asc)
+run_bounded("(printf 'ncols 12\\nnrows 10\\nxllcorner 0\\nyllcorner 0\\ncellsize 1\\n'; yes 0 1 2 3 4 5 6 7 8 9 10 11) > endless.asc 2> /dev/null &
+             ${bounded} --terrain endless.asc"
+            "endless.asc: more than the 7733 bytes that its 12 x 10 cells at 64 bytes a cell can take")
+# A PNG and a JPEG whose headers start endless zeros: the PNG is of 4 x 4 pixels, the JPEG's size never comes.
+run_bounded("(printf '\\211PNG\\r\\n\\032\\n\\0\\0\\0\\rIHDR\\0\\0\\0\\4\\0\\0\\0\\4\\10\\0\\0\\0\\0'; cat /dev/zero) | ${bounded} --terrain /dev/stdin"
+            "/dev/stdin: more than the [0-9]+ bytes that its 4 x 4 pixels can take")
+run_bounded("(printf '\\377\\330\\377'; cat /dev/zero) | ${bounded} --density image:/dev/stdin"
+            "/dev/stdin: cannot read as an image \\(no complete header in its first 16 MiB\\)")
