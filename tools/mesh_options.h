@@ -291,8 +291,8 @@ inline Options parse(int argc, const char* const* argv)
   if(have_scale) o.points = 0.;
   o.points_given = have_points;
   if(have_points && !(o.points >= 1.)) usage_error("--points must be at least 1");
-  // beyond, the count would not convert to a std::size_t
-  if(have_points && !(o.points <= 1e18)) usage_error("--points must be at most 1e18");
+  // the sampler refuses more (its maximum_number, 10^8 by default)
+  if(have_points && !(o.points <= 1e8)) usage_error("--points must be at most 1e8");
   if(have_scale && !(o.scale > 0.)) usage_error("--scale must be positive");
   if(have_density && terrain) usage_error("give --density or --terrain, not both");
   if(!(o.gamma > 0.)) usage_error("--gamma must be positive");

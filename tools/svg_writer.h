@@ -12,11 +12,41 @@
 #include <CGAL/Penrose_Delaunay_triangulation_2/IO/internal/output_file.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cstdio>
+#include <filesystem>
 #include <stdexcept>
 #include <string>
+#include <system_error>
 
 namespace penrose_tools {
+
+/*
+A link to `file` from an SVG written to `svg`: the path of the file relative
+to the SVG's folder (a file: URI if there is none), so that it resolves
+wherever the SVG is opened from, percent-encoded (RFC 3986) but for its
+slashes and unreserved characters, so that %, #, ? and spaces stay part of
+the path and the link holds no control character (which XML 1.0 forbids,
+even escaped), no byte that is not UTF-8, and nothing XML would need escaped.
+*/
+inline std::string link_to(const std::string& file, const std::string& svg)
+{
+  namespace fs = std::filesystem;
+  std::error_code error;
+  const fs::path target = fs::absolute(file, error);
+  const fs::path relative = fs::relative(target, fs::absolute(svg, error).parent_path(), error);
+  const std::string path = (error || relative.empty() ? target : relative).generic_string();
+  std::string link = error || relative.empty() ? "file://" : "";
+  for(unsigned char c : path) {
+    if(std::isalnum(c) || c == '-' || c == '.' || c == '_' || c == '~' || c == '/') link += char(c);
+    else {
+      char hex[4];
+      std::snprintf(hex, sizeof hex, "%%%02X", c);
+      link += hex;
+    }
+  }
+  return link;
+}
 
 class Svg_writer
 {
@@ -36,9 +66,10 @@ public:
     out_.commit();
   }
 
+  // `href` a URI reference (see link_to()), which needs no escaping in XML
   void background_image(const std::string& href)
   {
-    out_.write("<image xlink:href=\"" + escaped(href) + "\"");
+    out_.write("<image xlink:href=\"" + href + "\"");
     std::fprintf(out_.stream(), " x=\"0\" y=\"0\" width=\"%g\" height=\"%g\" preserveAspectRatio=\"none\" opacity=\"0.6\"/>\n",
                  w_, h_);
   }
@@ -57,19 +88,6 @@ public:
   }
 
 private:
-  // `s` as the value of an attribute
-  static std::string escaped(const std::string& s)
-  {
-    std::string e;
-    for(char c : s)
-      if(c == '&') e += "&amp;";
-      else if(c == '<') e += "&lt;";
-      else if(c == '>') e += "&gt;";
-      else if(c == '"') e += "&quot;";
-      else e += c;
-    return e;
-  }
-
   double u(double x) const { return (x - xmin_) * k_; }
   double v(double y) const { return (ymax_ - y) * k_; }
 
