@@ -486,19 +486,22 @@ std::vector<double> sample(const penrose_tools::Plane_mesh& m, const Raster<T>& 
   return at_vertex;
 }
 
+unsigned char byte(double v) { return (unsigned char)std::lround(255. * std::min(std::max(v, 0.), 1.)); }
+
 // The mesh against the raster `image` at the centres of the pixels that it
 // covers (marked in `covered`) and that `mask`, if given, holds: the largest
 // and the RMS difference between the image and the linear interpolation over
 // each face of the values `at_vertex` (image.channels a vertex). That
-// interpolation is drawn into `rendering`, if given.
+// interpolation is drawn into `rendering`, if given, as 8-bit values (those
+// of the PNG: doubles took 1.6 GB for 8192 x 8192 pixels).
 template <class T>
 std::pair<double, double> compare(const penrose_tools::Plane_mesh& m, const std::vector<double>& at_vertex,
                                   const Raster<T>& image, std::vector<char>& covered, const std::vector<char>* mask,
-                                  Raster<double>* rendering)
+                                  Raster<unsigned char>* rendering)
 {
   const std::size_t c = image.channels;
   if(rendering)
-    *rendering = {image.width, image.height, c, std::vector<double>(c * image.width * image.height, 0.),
+    *rendering = {image.width, image.height, c, std::vector<unsigned char>(c * image.width * image.height, 0),
                   image.x0, image.y0, image.x1, image.y1};
   double largest = 0., squares = 0.;
   std::size_t n = 0;
@@ -510,7 +513,7 @@ std::pair<double, double> compare(const penrose_tools::Plane_mesh& m, const std:
       const double e = value - double(image.values[c * p + k]);
       largest = std::max(largest, std::abs(e));
       squares += e * e;
-      if(rendering) rendering->values[c * p + k] = value;
+      if(rendering) rendering->values[c * p + k] = byte(value);
     }
   });
   return {largest, n ? std::sqrt(squares / double(n)) : 0.};
@@ -524,7 +527,7 @@ struct Quality
 {
   double coverage = 0., max_error = 0., rms_error = 0., grid_max_error = 0., grid_rms_error = 0.;
   std::size_t grid_vertices = 0;
-  Raster<double> rendering;  // of the mesh, if asked for
+  Raster<unsigned char> rendering;  // of the mesh, if asked for
 };
 
 // The heights of the vertices at m.points, fitted by --fit-heights or not.
@@ -613,8 +616,6 @@ void write_png(const std::string& file, int width, int height, int channels, con
   CGAL::IO::internal::write_bytes(file, png);
 }
 
-unsigned char byte(double v) { return (unsigned char)std::lround(255. * std::min(std::max(v, 0.), 1.)); }
-
 // The mesh's edges, 1024 pixels on the region's longer side, over the image, or over the height
 // field shaded (lit from the north-west, its relief exaggerated to a fifth of
 // the region's width), lightened so that the edges stand out.
@@ -657,11 +658,9 @@ void draw_png(const Options& o, const Input& in, const Mesh& m)
   write_png(o.png, pic.width, pic.height, 3, pic.rgb.data());
 }
 
-void write_reconstruction(const std::string& file, const Raster<double>& r)
+void write_reconstruction(const std::string& file, const Raster<unsigned char>& r)
 {
-  std::vector<unsigned char> rgb(r.values.size());
-  for(std::size_t k = 0; k < rgb.size(); ++k) rgb[k] = byte(r.values[k]);
-  write_png(file, int(r.width), int(r.height), 3, rgb.data());
+  write_png(file, int(r.width), int(r.height), 3, r.values.data());
 }
 
 struct Timings
