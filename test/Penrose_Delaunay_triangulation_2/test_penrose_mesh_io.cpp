@@ -592,6 +592,11 @@ TEST(Output, LinksFollowedAndPermissionsKept)
   EXPECT_TRUE(fs::is_symlink(link));
   EXPECT_EQ(read_file(target), "new\n");
   EXPECT_EQ(fs::status(target).permissions() & fs::perms::all, fs::perms::owner_read | fs::perms::owner_write);
+  // a file that its permissions protect is not replaced (a rename could)
+  fs::permissions(target, fs::perms::owner_read);
+  expect_failure([](const std::string& f) { IO::internal::write_bytes(f, "newer\n"); }, target, "read-only");
+  EXPECT_EQ(read_file(target), "new\n");
+  fs::permissions(target, fs::perms::owner_read | fs::perms::owner_write);
 }
 
 // A device is written in place (a rename cannot replace it), and a failed

@@ -41,6 +41,10 @@ public:
       errno = 0;
       return;
     }
+    // a rename would replace a file that its permissions protect from writing
+    if(fs::exists(status) && (status.permissions() & (fs::perms::owner_write | fs::perms::group_write
+                                                      | fs::perms::others_write)) == fs::perms::none)
+      throw file_error(file, "cannot write (it is read-only)");
     target_ = fs::exists(status) ? fs::canonical(file, error) : fs::path(file);
     if(error) target_ = file;
     // "x": created here, never an existing file; the name is cut to stay within NAME_MAX
