@@ -46,8 +46,9 @@ namespace IO {
 The most pixels, or cells, that the readers of images and height fields
 accept unless told otherwise: 2^26 (8192 x 8192). A file whose header claims
 more is refused before anything is allocated; the `max_pixels` (`max_cells`)
-argument of each reader raises the limit. A raster of that size takes about
-2 GB in `penrose_mesh` (its `--max-pixels` option sets the limit there).
+argument of each reader raises the limit. At that size, `penrose_mesh` takes
+up to 1.5 GiB for an RGB image, 2.5 GiB to mesh one for its reconstruction,
+0.7 GiB for a 16-bit terrain (its `--max-pixels` option sets the limit there).
 */
 constexpr std::size_t default_max_pixels = std::size_t(1) << 26;
 
