@@ -47,12 +47,13 @@ public:
       throw file_error(file, "cannot write (it is read-only)");
     target_ = fs::exists(status) ? fs::canonical(file, error) : fs::path(file);
     if(error) target_ = file;
-    // "x": created here, never an existing file; the name is cut to stay within NAME_MAX
+    // "x": created here, never an existing file; "+": penrose_mesh's streamed
+    // PLY reads its faces back from a second one. The name is cut to stay within NAME_MAX
     const std::string name = "." + target_.filename().string().substr(0, 200) + ".";
     std::random_device random;
     for(int attempt = 0; attempt < 64 && !stream_; ++attempt) {
       temporary_ = target_.parent_path() / (name + std::to_string(random()) + ".tmp");
-      stream_ = std::fopen(temporary_.string().c_str(), "wbx");
+      stream_ = std::fopen(temporary_.string().c_str(), "w+bx");
       if(!stream_ && errno != EEXIST) break;
     }
     if(!stream_) {
