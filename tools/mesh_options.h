@@ -64,9 +64,9 @@ inline const char* const usage_text =
   "                --reconstruct or --max-error, a 16-bit terrain 0.7 GiB)\n"
   "\n"
   "sampling:\n"
-  "  --points N    scale the density so that about N points come out (default 10000,\n"
-  "                at most 1e8); for a terrain, the number of vertices (see\n"
-  "                --base-fraction), at most one a cell where greedy insertion refines\n"
+  "  --points N    scale the density so that about N points come out (default 10000);\n"
+  "                for a terrain, the number of vertices (see --base-fraction), at most\n"
+  "                one a cell where greedy insertion refines\n"
   "  --scale S     multiply the density (in points per unit area) by S instead\n"
   "  --max-error E terrain or image: insert vertices until the vertical error (in the\n"
   "                heights' unit; for an image, of the luminance of its colours, from 0\n"
@@ -301,8 +301,8 @@ inline Options parse(int argc, const char* const* argv)
   if(have_scale) o.points = 0.;
   o.points_given = have_points;
   if(have_points && !(o.points >= 1.)) usage_error("--points must be at least 1");
-  // the sampler refuses more (its maximum_number, 10^8 by default)
-  if(have_points && !(o.points <= 1e8)) usage_error("--points must be at most 1e8");
+  // beyond, the count would not convert to a std::size_t
+  if(have_points && !(o.points <= 1e18)) usage_error("--points must be at most 1e18");
   if(have_scale && !(o.scale > 0.)) usage_error("--scale must be positive");
   if(have_density && terrain) usage_error("give --density or --terrain, not both");
   if(!(o.gamma > 0.)) usage_error("--gamma must be positive");
