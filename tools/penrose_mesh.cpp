@@ -962,9 +962,10 @@ void run(Options o)
 
 } // namespace
 
-// A bad option: status 2; a file that cannot be read or written: status 1.
-// Messages echo names and values: their control bytes are escaped.
-int main(int argc, char** argv)
+// The whole tool on the command line `argv`: status 0; 2 for a bad option,
+// 1 for a file that cannot be read or written. Messages echo names and
+// values: their control bytes are escaped.
+int penrose_mesh(int argc, const char* const* argv)
 {
   try {
     const Options o = penrose_tools::parse(argc, argv);
@@ -989,3 +990,8 @@ int main(int argc, char** argv)
   }
   return 0;
 }
+
+// fuzz/command_line.cpp includes this file and calls penrose_mesh() itself
+#ifndef PENROSE_MESH_NO_MAIN
+int main(int argc, char** argv) { return penrose_mesh(argc, argv); }
+#endif
