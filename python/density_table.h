@@ -7,9 +7,11 @@
 #ifndef PENROSE_PYTHON_DENSITY_TABLE_H
 #define PENROSE_PYTHON_DENSITY_TABLE_H
 
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <functional>
+#include <limits>
 #include <stdexcept>
 #include <utility>
 #include <vector>
@@ -89,9 +91,12 @@ public:
   }
 
   // Gives the pending points their values, `values[k]` that of `pending(k)`.
+  // A NaN becomes the default one, which the sampler refuses: its payload
+  // might be that of a value not known yet.
   void set_pending_values(const std::vector<double>& values)
   {
-    for(std::size_t k = 0; k < pending_.size(); ++k) entries_[pending_[k]].value = values[k];
+    for(std::size_t k = 0; k < pending_.size(); ++k)
+      entries_[pending_[k]].value = std::isnan(values[k]) ? std::numeric_limits<double>::quiet_NaN() : values[k];
     pending_.clear();
     for(Entry& e : recent_) e = Entry{empty_key, 0, 0.};
   }

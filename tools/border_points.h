@@ -12,6 +12,8 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <sstream>
+#include <stdexcept>
 #include <utility>
 #include <vector>
 
@@ -36,9 +38,13 @@ integral, so that no part at a corner is much shorter than its neighbours.
 The points depend on the segment and the density alone, so that two tiles
 that share an edge and walk it in the same direction find the same points,
 bit for bit. A horizontal or vertical segment's points lie exactly on it.
+A density that is negative, NaN or above `most` (a function that misbehaves
+on the border alone, which the sampler never saw) throws
+std::invalid_argument at once, before the walk places billions of points.
 */
 template <class Density, class Add>
-void for_each_edge_point(double ax, double ay, double bx, double by, const Density& points_per_unit_area, Add&& add)
+void for_each_edge_point(double ax, double ay, double bx, double by, const Density& points_per_unit_area, double most,
+                         Add&& add)
 {
   const double length = std::hypot(bx - ax, by - ay);
   if(!(length > 0.)) return;
@@ -46,6 +52,15 @@ void for_each_edge_point(double ax, double ay, double bx, double by, const Densi
   auto per_length = [&](double u) {  // spacings per unit length
     const auto [x, y] = at(u);
     const double rho = points_per_unit_area(x, y);
+    if(!(rho >= 0. && rho <= most)) {
+      std::ostringstream m;
+      m.precision(17);
+      m << "the density on the border at (" << x << ", " << y << ") is " << rho << " points per unit area once scaled: ";
+      m.precision(3);
+      if(std::isfinite(rho) && rho > 0.) m << "more than the " << most << " that the sampler could represent here";
+      else m << "it must be finite and non-negative";
+      throw std::invalid_argument(m.str());
+    }
     return rho > 0. ? 1. / sample_spacing(rho) : 0.;
   };
   // The integral by the trapezoid rule, in steps of at most a quarter spacing
@@ -86,7 +101,9 @@ inline bool is_on_border(const std::array<double, 4>& region, double x, double y
 The points along the border of region = {x0, y0, x1, y1}: its corners and
 the points of its sides (see for_each_edge_point()), each side walked from
 west to east or from south to north, so that a rectangle that shares a side
-with this one has the same points there.
+with this one has the same points there. The density may reach 10^12 / L^2
+points per unit area, L the region's longer side: the sampler represents
+about 4 x 10^11 / L^2 at most.
 */
 class Border
 {
@@ -96,11 +113,12 @@ public:
   {
     const double x0 = region[0], y0 = region[1], x1 = region[2], y1 = region[3];
     const double ends[4][4] = {{x0, y0, x1, y0}, {x1, y0, x1, y1}, {x0, y1, x1, y1}, {x0, y0, x0, y1}};
+    const double longer = (std::max)(x1 - x0, y1 - y0), most = 1e12 / (longer * longer);
     for(int s = 0; s < 4; ++s) {
       std::vector<double>& p = side_[std::size_t(s)];
       const double* e = ends[s];
       p.push_back(s % 2 == 0 ? e[0] : e[1]);
-      for_each_edge_point(e[0], e[1], e[2], e[3], points_per_unit_area,
+      for_each_edge_point(e[0], e[1], e[2], e[3], points_per_unit_area, most,
                           [&p, s](double x, double y) { p.push_back(s % 2 == 0 ? x : y); });
       p.push_back(s % 2 == 0 ? e[2] : e[3]);
     }

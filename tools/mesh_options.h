@@ -9,11 +9,19 @@
 
 #include <CGAL/Penrose_Delaunay_triangulation_2/IO/height_field_io.h>
 
+#include "tiles.h"
+
+#include <sys/stat.h>
+
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
+#include <map>
 #include <stdexcept>
 #include <string>
+#include <system_error>
 #include <utility>
+#include <vector>
 
 namespace penrose_tools {
 
@@ -35,25 +43,30 @@ inline const char* const usage_text =
   "                for importance sampling (stippling, the paper's Figure 9); with --reconstruct\n"
   "                and none of --log, --invert, --gradient and --gamma, the mesh is made to\n"
   "                render the image back instead: a sample for a fraction of the vertices (see\n"
-  "                --base-fraction), the rest inserted where the luminance is worst interpolated\n"
+  "                --base-fraction; uniform for a black image), the rest inserted where the\n"
+  "                luminance is worst interpolated\n"
   "  --terrain FILE\n"
   "                a height field: a 16-bit grey PNG or PGM, or an ESRI ASCII grid (.asc);\n"
   "                density from its curvature (largest absolute Hessian eigenvalue, smoothed,\n"
-  "                to the power 2/3); the mesh is 3D, with the heights\n"
+  "                to the power 2/3; uniform if it is zero everywhere: a flat terrain);\n"
+  "                the mesh is 3D, with the heights\n"
   "  --gamma G     raise the density to the power G (after the options below)\n"
   "  --log         image: use log(1 + L / mean L) instead of L (for HDR images)\n"
   "  --invert      image: dense where the image is dark\n"
   "  --gradient    image: use the smoothed gradient magnitude (edges), plus a tenth of its mean\n"
   "  --height-scale S   terrain: multiply the heights by S (default 1)\n"
   "  --viewer X Y  terrain: divide the density by 1 + d / d0, d the distance to (X, Y),\n"
-  "                d0 a fiftieth of the diagonal (view-dependent mesh)\n"
+  "                d0 a fiftieth of the diagonal (view-dependent mesh), scaled so that\n"
+  "                the cell nearest the viewer keeps its density\n"
   "  --max-pixels N  refuse an image or height field of more than N pixels (cells),\n"
-  "                from its header, before reading it (default 67108864 = 8192 x 8192,\n"
-  "                about 2 GB of memory here)\n"
+  "                from its header, before reading it (default 67108864 = 8192 x 8192:\n"
+  "                at that size an RGB image takes up to 1.5 GiB of memory, 2.5 GiB with\n"
+  "                --reconstruct or --max-error, a 16-bit terrain 0.7 GiB)\n"
   "\n"
   "sampling:\n"
   "  --points N    scale the density so that about N points come out (default 10000);\n"
-  "                for a terrain, the number of vertices (see --base-fraction)\n"
+  "                for a terrain, the number of vertices (see --base-fraction), at most\n"
+  "                one a cell where greedy insertion refines\n"
   "  --scale S     multiply the density (in points per unit area) by S instead\n"
   "  --max-error E terrain or image: insert vertices until the vertical error (in the\n"
   "                heights' unit; for an image, of the luminance of its colours, from 0\n"
@@ -91,7 +104,8 @@ inline const char* const usage_text =
   "  --out-points  one \"x y\" line per point (\"x y z\" for a terrain), full precision\n"
   "  --out-mesh    the triangulation as .off, .ply or .obj (by extension), the vertices\n"
   "                in the order of --out-points, triangles counter-clockwise\n"
-  "  --svg         draw the triangulation and the points (over the image, if any)\n"
+  "  --svg         draw the triangulation and the points (over the image, if any,\n"
+  "                linked by its path from the SVG's folder)\n"
   "  --png         draw the triangulation over the image or the height field\n"
   "                (--svg and --png drawings are 1024 pixels on the region's longer side)\n"
   "  --reconstruct image: render the mesh back to a PNG, colours interpolated linearly\n"
@@ -107,12 +121,18 @@ inline const char* const usage_text =
   "                \"fit_seconds\". The tile tree is\n"
   "                sampled while the triangulation is derived from it: sample_seconds is the\n"
   "                sampler's preparation, triangulate_seconds the rest\n"
+  "  Each output is written to a temporary file beside it, then renamed over it\n"
+  "  once complete: a run that fails or is killed leaves the file as it was (a\n"
+  "  read-only file is refused). An output that is the input or another output\n"
+  "  (through ./, a symbolic or a hard link too) is refused before anything is\n"
+  "  read; devices such as /dev/null are written in place and not checked.\n"
   "\n"
   "tiles:\n"
   "  --tiles K     cut the region into K x K tiles and write one mesh each,\n"
   "                NAME_I_J.EXT for --out-mesh NAME.EXT, I from west to east and J from\n"
-  "                south to north, from 0 (1 <= K <= 1024; a tile must have 8 x 8 cells\n"
-  "                of an image or height field at least). A tile's vertices are the\n"
+  "                south to north, from 0 (1 <= K <= 1024; K x K at most the vertices\n"
+  "                expected, and a tile must have 8 x 8 cells of an image or height\n"
+  "                field at least). A tile's vertices are the\n"
   "                samples of the whole region that lie in it, points along its sides\n"
   "                computed from each side alone (the same in the tiles that share it:\n"
   "                the tiles meet without gaps or skirts), vertices that greedy\n"
@@ -144,7 +164,10 @@ inline const char* const usage_text =
   "\n"
   "A progress bar is drawn on stderr, when it is a terminal, for runs over a second.\n"
   "A file that cannot be read or written ends the run with status 1 and one line\n"
-  "naming it and the problem; a bad option, with status 2.\n"
+  "naming it and the problem; a bad option, with status 2 (control characters of\n"
+  "the names and values echoed are written \\xHH). A reader reads no further than\n"
+  "the dimensions in the file's header allow: a pipe or a device that does not end\n"
+  "is refused.\n"
   "\n"
   "examples:\n"
   "  penrose_mesh --density ramp --points 20000 --svg ramp.svg --out-mesh ramp.off\n"
@@ -230,9 +253,14 @@ inline Options parse(int argc, const char* const* argv)
       return argv[i + k];
     };
     auto text = [&](std::string& s) { s = value(); ++i; };
+    // a file name: empty, it was taken for no file at all
+    auto file = [&](std::string& s) {
+      text(s);
+      if(s.empty()) usage_error(a + " needs a file name, not ''");
+    };
     if(a == "--help" || a == "-h") { o.help = true; return o; }
     else if(a == "--density") { text(o.density); have_density = true; }
-    else if(a == "--terrain") text(o.terrain);
+    else if(a == "--terrain") file(o.terrain);
     else if(a == "--points") { o.points = number(value(), a); have_points = true; ++i; }
     else if(a == "--scale") { o.scale = number(value(), a); have_scale = true; ++i; }
     else if(a == "--region") { for(int k = 0; k < 4; ++k) o.region[k] = number(value(k + 1), a); i += 4; o.region_given = true; }
@@ -248,12 +276,12 @@ inline Options parse(int argc, const char* const* argv)
     else if(a == "--gradient") o.gradient = true;
     else if(a == "--height-scale") { o.height_scale = number(value(), a); ++i; }
     else if(a == "--viewer") { for(int k = 0; k < 2; ++k) o.viewer[k] = number(value(k + 1), a); i += 2; o.viewer_given = true; }
-    else if(a == "--out-points") text(o.out_points);
-    else if(a == "--out-mesh") text(o.out_mesh);
-    else if(a == "--svg") text(o.svg);
-    else if(a == "--png") text(o.png);
-    else if(a == "--reconstruct") text(o.reconstruct);
-    else if(a == "--stats-json") text(o.stats_json);
+    else if(a == "--out-points") file(o.out_points);
+    else if(a == "--out-mesh") file(o.out_mesh);
+    else if(a == "--svg") file(o.svg);
+    else if(a == "--png") file(o.png);
+    else if(a == "--reconstruct") file(o.reconstruct);
+    else if(a == "--stats-json") file(o.stats_json);
     else if(a == "--max-pixels") { o.max_pixels = number(value(), a); ++i; }
     else if(a == "--tiles") { o.tiles = whole_number(value(), a, 1, 1024); ++i; }
     else if(a == "--streamed") o.streamed = true;
@@ -327,6 +355,55 @@ inline Options parse(int argc, const char* const* argv)
     o.boundary = true;
   }
   return o;
+}
+
+// What `path` names, to compare files: the device and inode of an existing
+// file, so that ./x, a symbolic link and a hard link are x; else the
+// absolute path, the links of its folders resolved. Empty for what is not a
+// regular file (/dev/null, a pipe), which outputs may share.
+inline std::string file_identity(const std::string& path)
+{
+  struct stat st;
+  if(::stat(path.c_str(), &st) == 0)
+    return S_ISREG(st.st_mode) ? std::to_string(st.st_dev) + ":" + std::to_string(st.st_ino) : std::string();
+  std::error_code error;
+  const std::filesystem::path absolute = std::filesystem::absolute(path, error);
+  return "path " + std::filesystem::weakly_canonical(absolute, error).string();
+}
+
+// Refuses, before anything is read, an output that is the input or another
+// output: the input would be lost, or an output overwritten by the next.
+// The tiles of --tiles, the only output then, are checked against the input.
+inline void check_files(const Options& o)
+{
+  std::vector<std::pair<std::string, std::string>> files;  // the option (and its value) and the file
+  if(!o.terrain.empty()) files.emplace_back("--terrain " + o.terrain, o.terrain);
+  if(o.density.rfind("image:", 0) == 0) files.emplace_back("--density " + o.density, o.density.substr(6));
+  const std::size_t inputs = files.size();
+  const std::pair<const char*, const std::string*> outputs[] = {
+    {"--out-points", &o.out_points}, {"--out-mesh", &o.out_mesh}, {"--svg", &o.svg}, {"--png", &o.png},
+    {"--reconstruct", &o.reconstruct}, {"--stats-json", &o.stats_json}};
+  for(const auto& [option, file] : outputs)
+    if(!file->empty() && !(o.tiles && file == &o.out_mesh)) files.emplace_back(option + (" " + *file), *file);
+  std::map<std::string, std::size_t> seen;
+  for(std::size_t k = 0; k < files.size(); ++k) {
+    const std::string id = file_identity(files[k].second);
+    if(id.empty()) continue;
+    const auto [at, first] = seen.emplace(id, k);
+    if(first) continue;
+    if(at->second < inputs) usage_error(files[k].first + " is the input file (" + files[at->second].first + ")");
+    usage_error(files[k].first + " and " + files[at->second].first + " are the same file");
+  }
+  if(!o.tiles || !inputs) return;
+  const std::string input = file_identity(files[0].second);
+  for(int j = 0; j < o.tiles; ++j)
+    for(int i = 0; i < o.tiles; ++i)
+      if(o.tile[0] < 0 || (i == o.tile[0] && j == o.tile[1])) {
+        const std::string tile = tile_file_name(o.out_mesh, i, j);
+        if(!input.empty() && file_identity(tile) == input)
+          usage_error("--out-mesh " + o.out_mesh + ": tile " + std::to_string(i) + " " + std::to_string(j) + ", " + tile
+                      + ", is the input file (" + files[0].first + ")");
+      }
 }
 
 } // namespace penrose_tools

@@ -12,6 +12,7 @@
 // It writes a C++ header; the command line that made it is recorded there.
 
 #include <CGAL/Penrose_Delaunay_triangulation_2/internal/tiling/Depth_first_sampling.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/IO/internal/output_file.h>
 
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -21,7 +22,6 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
 #include <iostream>
 #include <sstream>
 #include <string>
@@ -215,7 +215,8 @@ int main(int argc, char** argv)
     table = relax_and_average(o, round == 0 ? nullptr : &current, polish ? 0 : o.iterations,
                               polish ? o.push_weight : 1.);
   }
-  std::ofstream out(o.out);
+  // written whole, or not at all: a run cut short leaves the header that the build includes as it was
+  std::ostringstream out;
   out << "// Copyright (c) 2026 The Penrose_Delaunay_triangulation_2 authors.\n"
          "// SPDX-License-Identifier: GPL-3.0-or-later\n//\n"
          "// GENERATED FILE, do not edit. Made by tools/penrose_correction_optimizer:\n//   "
@@ -243,5 +244,11 @@ int main(int argc, char** argv)
       << ", vectors };\n  return table;\n}\n\n"
          "} // namespace Penrose\n} // namespace internal\n} // namespace CGAL\n\n"
          "#endif // CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_INTERNAL_CORRECTION_VECTORS_H\n";
-  return out ? 0 : 1;
+  try {
+    CGAL::IO::internal::write_bytes(o.out, out.str());
+  } catch(const std::exception& e) {
+    std::cerr << "penrose_correction_optimizer: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
 }

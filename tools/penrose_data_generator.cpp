@@ -134,8 +134,12 @@ void make_image(const std::string& file, std::size_t n)
       for(int k = 0; k < 3; ++k)
         rgb[3 * (j * n + i) + std::size_t(k)] = (unsigned char)std::lround(255. * std::min(1., std::max(0., sum[k] / (s * s))));
     }
-  if(!stbi_write_png(file.c_str(), int(n), int(n), 3, rgb.data(), int(3 * n)))
-    throw std::runtime_error(file + ": cannot write");
+  // encoded in memory, then written as every output is (see CGAL::IO::internal::Output_file)
+  std::string png;
+  auto append = [](void* to, void* bytes, int k) { static_cast<std::string*>(to)->append(static_cast<char*>(bytes), std::size_t(k)); };
+  if(!stbi_write_png_to_func(append, &png, int(n), int(n), 3, rgb.data(), int(3 * n)))
+    throw std::runtime_error(file + ": cannot encode the PNG");
+  CGAL::IO::internal::write_bytes(file, png);
 }
 
 } // namespace

@@ -14,6 +14,7 @@
 #include <CGAL/fit_terrain_heights.h>
 #include <CGAL/refine_terrain_by_greedy_insertion.h>
 #include <CGAL/Penrose_Delaunay_triangulation_2/IO/height_field_io.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/IO/internal/output_file.h>
 #include <CGAL/Penrose_Delaunay_triangulation_2/IO/read_rgb_image.h>
 #include <CGAL/Penrose_Delaunay_triangulation_2/IO/write_triangulation.h>
 
@@ -73,6 +74,11 @@ bool all_finite(const std::vector<double>& v)
   return std::all_of(v.begin(), v.end(), [](double x) { return std::isfinite(x); });
 }
 
+bool all_zero(const std::vector<double>& v)
+{
+  return std::all_of(v.begin(), v.end(), [](double x) { return x == 0.; });
+}
+
 std::string text(double v)
 {
   char buf[32];
@@ -119,8 +125,10 @@ Input read_image(const Options& o)
   if(o.log) penrose_tools::log_transform(d);
   if(o.gradient) penrose_tools::gradient_magnitude(d, img.width, img.height);
   if(o.invert) penrose_tools::invert(d);
+  const bool zero = all_zero(d);
   penrose_tools::apply_gamma(d, o.gamma);
   if(!all_finite(d)) usage_error("--gamma " + text(o.gamma) + ": the density of " + in.file + " raised to it overflows");
+  if(!zero && all_zero(d)) usage_error("--gamma " + text(o.gamma) + ": the density of " + in.file + " raised to it is zero");
   return in;
 }
 
@@ -152,9 +160,12 @@ Input read_terrain(const Options& o)
     if(o.height_scale != 1.) usage_error(scaled + "the curvature of the heights of " + in.file + " overflows");
     throw std::runtime_error(in.file + ": the curvature of its heights overflows (cells too small for their heights)");
   }
+  const bool zero = all_zero(in.density.values);
   penrose_tools::apply_gamma(in.density.values, o.gamma);
   if(!all_finite(in.density.values))
     usage_error("--gamma " + text(o.gamma) + ": the density of " + in.file + " raised to it overflows");
+  if(!zero && all_zero(in.density.values))
+    usage_error("--gamma " + text(o.gamma) + ": the density of " + in.file + " raised to it is zero");
   return in;
 }
 
@@ -164,7 +175,8 @@ void place(Input& in, const Options& o)
   const double* r = o.region;
   for(auto* d : {&in.heights, &in.intensity, &in.density}) { d->x0 = r[0]; d->y0 = r[1]; d->x1 = r[2]; d->y1 = r[3]; }
   in.colours.x0 = r[0]; in.colours.y0 = r[1]; in.colours.x1 = r[2]; in.colours.y1 = r[3];
-  if(o.viewer_given) penrose_tools::weight_by_viewer(in.density, o.viewer[0], o.viewer[1]);
+  if(o.viewer_given && !penrose_tools::weight_by_viewer(in.density, o.viewer[0], o.viewer[1]))
+    usage_error("--viewer " + text(o.viewer[0]) + " " + text(o.viewer[1]) + ": its distances to the region overflow");
 }
 
 struct Density
@@ -474,19 +486,22 @@ std::vector<double> sample(const penrose_tools::Plane_mesh& m, const Raster<T>& 
   return at_vertex;
 }
 
+unsigned char byte(double v) { return (unsigned char)std::lround(255. * std::min(std::max(v, 0.), 1.)); }
+
 // The mesh against the raster `image` at the centres of the pixels that it
 // covers (marked in `covered`) and that `mask`, if given, holds: the largest
 // and the RMS difference between the image and the linear interpolation over
 // each face of the values `at_vertex` (image.channels a vertex). That
-// interpolation is drawn into `rendering`, if given.
+// interpolation is drawn into `rendering`, if given, as 8-bit values (those
+// of the PNG: doubles took 1.6 GB for 8192 x 8192 pixels).
 template <class T>
 std::pair<double, double> compare(const penrose_tools::Plane_mesh& m, const std::vector<double>& at_vertex,
                                   const Raster<T>& image, std::vector<char>& covered, const std::vector<char>* mask,
-                                  Raster<double>* rendering)
+                                  Raster<unsigned char>* rendering)
 {
   const std::size_t c = image.channels;
   if(rendering)
-    *rendering = {image.width, image.height, c, std::vector<double>(c * image.width * image.height, 0.),
+    *rendering = {image.width, image.height, c, std::vector<unsigned char>(c * image.width * image.height, 0),
                   image.x0, image.y0, image.x1, image.y1};
   double largest = 0., squares = 0.;
   std::size_t n = 0;
@@ -498,7 +513,7 @@ std::pair<double, double> compare(const penrose_tools::Plane_mesh& m, const std:
       const double e = value - double(image.values[c * p + k]);
       largest = std::max(largest, std::abs(e));
       squares += e * e;
-      if(rendering) rendering->values[c * p + k] = value;
+      if(rendering) rendering->values[c * p + k] = byte(value);
     }
   });
   return {largest, n ? std::sqrt(squares / double(n)) : 0.};
@@ -512,7 +527,7 @@ struct Quality
 {
   double coverage = 0., max_error = 0., rms_error = 0., grid_max_error = 0., grid_rms_error = 0.;
   std::size_t grid_vertices = 0;
-  Raster<double> rendering;  // of the mesh, if asked for
+  Raster<unsigned char> rendering;  // of the mesh, if asked for
 };
 
 // The heights of the vertices at m.points, fitted by --fit-heights or not.
@@ -562,28 +577,20 @@ Quality measure(const Mesh& m, const Raster<T>& image, std::vector<double> at_ve
   return q;
 }
 
-// Closes `f`, opened to write `file`: a failed write or close (a full disk)
-// is an error naming the file.
-void close_written(FILE* f, const std::string& file)
-{
-  const bool failed = std::ferror(f) != 0;
-  if(std::fclose(f) != 0 || failed) throw std::runtime_error(file + ": write failed");
-}
-
 void write_points(const std::string& file, const Mesh& m, bool with_heights)
 {
-  FILE* f = std::fopen(file.c_str(), "w");
-  if(!f) throw std::runtime_error(file + ": cannot open for writing");
+  CGAL::IO::internal::Output_file out(file);
   for(std::size_t k = 0; k < m.points.size(); ++k)
-    if(with_heights) std::fprintf(f, "%.17g %.17g %.17g\n", m.points[k].x(), m.points[k].y(), m.vertex[k]->point().z());
-    else std::fprintf(f, "%.17g %.17g\n", m.points[k].x(), m.points[k].y());
-  close_written(f, file);
+    if(with_heights)
+      std::fprintf(out.stream(), "%.17g %.17g %.17g\n", m.points[k].x(), m.points[k].y(), m.vertex[k]->point().z());
+    else std::fprintf(out.stream(), "%.17g %.17g\n", m.points[k].x(), m.points[k].y());
+  out.commit();
 }
 
 void write_svg(const Options& o, const Input& in, const Mesh& m)
 {
   penrose_tools::Svg_writer svg(o.svg, o.region[0], o.region[1], o.region[2], o.region[3]);
-  if(!in.colours.values.empty()) svg.background_image(in.file);
+  if(!in.colours.values.empty()) svg.background_image(penrose_tools::link_to(in.file, o.svg));
   const double r = std::max(0.6, std::min(3., 0.25 * 1024. / std::sqrt(double(m.points.size()) + 1.)));
   svg.begin_group("stroke=\"#1f4e9c\" stroke-width=\"" + std::to_string(0.4 * r) + "\" stroke-opacity=\"0.8\"");
   for(auto e : m.t.finite_edges()) {
@@ -608,8 +615,6 @@ void write_png(const std::string& file, int width, int height, int channels, con
     throw std::runtime_error(file + ": cannot encode the PNG");
   CGAL::IO::internal::write_bytes(file, png);
 }
-
-unsigned char byte(double v) { return (unsigned char)std::lround(255. * std::min(std::max(v, 0.), 1.)); }
 
 // The mesh's edges, 1024 pixels on the region's longer side, over the image, or over the height
 // field shaded (lit from the north-west, its relief exaggerated to a fifth of
@@ -653,17 +658,31 @@ void draw_png(const Options& o, const Input& in, const Mesh& m)
   write_png(o.png, pic.width, pic.height, 3, pic.rgb.data());
 }
 
-void write_reconstruction(const std::string& file, const Raster<double>& r)
+void write_reconstruction(const std::string& file, const Raster<unsigned char>& r)
 {
-  std::vector<unsigned char> rgb(r.values.size());
-  for(std::size_t k = 0; k < rgb.size(); ++k) rgb[k] = byte(r.values[k]);
-  write_png(file, int(r.width), int(r.height), 3, rgb.data());
+  write_png(file, int(r.width), int(r.height), 3, r.values.data());
 }
 
 struct Timings
 {
   double read = 0., sample = 0., triangulate = 0., refine = 0., fit = 0., measure = 0., write = 0., total = 0.;
 };
+
+// The length of the UTF-8 sequence that starts at s[k] (1 for ASCII), or 0
+// if it is not one: a stray continuation byte, a sequence cut short, an
+// overlong encoding, a surrogate or a code point beyond U+10FFFF.
+std::size_t utf8_sequence_length(const std::string& s, std::size_t k)
+{
+  const unsigned char c = static_cast<unsigned char>(s[k]);
+  if(c < 0x80) return 1;
+  const std::size_t n = c >= 0xc2 && c <= 0xdf ? 2 : c >= 0xe0 && c <= 0xef ? 3 : c >= 0xf0 && c <= 0xf4 ? 4 : 0;
+  if(n == 0 || s.size() - k < n) return 0;
+  for(std::size_t i = 1; i < n; ++i)
+    if((static_cast<unsigned char>(s[k + i]) & 0xc0) != 0x80) return 0;
+  const unsigned char d = static_cast<unsigned char>(s[k + 1]);
+  if((c == 0xe0 && d < 0xa0) || (c == 0xed && d > 0x9f) || (c == 0xf0 && d < 0x90) || (c == 0xf4 && d > 0x8f)) return 0;
+  return n;
+}
 
 // A JSON number: null where the value does not exist (the PSNR of a mesh
 // without faces is infinite).
@@ -675,14 +694,23 @@ std::string json_number(double v, int digits = 6)
   return buf;
 }
 
+// `s` as a JSON string, valid UTF-8: a byte that does not belong to a UTF-8
+// sequence (a file name in Latin-1) becomes U+FFFD, the replacement character.
 std::string json_string(const std::string& s)
 {
   std::string j = "\"";
-  for(unsigned char c : s) {
-    char buf[8];
-    if(c == '"' || c == '\\') { j += '\\'; j += char(c); }
-    else if(c < 0x20) { std::snprintf(buf, sizeof buf, "\\u%04x", c); j += buf; }
-    else j += char(c);
+  for(std::size_t k = 0; k < s.size();) {
+    const unsigned char c = static_cast<unsigned char>(s[k]);
+    const std::size_t n = utf8_sequence_length(s, k);
+    if(n > 1) j.append(s, k, n);
+    else if(n == 0) j += "\xef\xbf\xbd";
+    else if(c == '"' || c == '\\') { j += '\\'; j += char(c); }
+    else if(c < 0x20) {
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\u%04x", c);
+      j += buf;
+    } else j += char(c);
+    k += n ? n : 1;
   }
   return j + '"';
 }
@@ -799,6 +827,11 @@ void run(Options o)
     o.region[2] = double(in.colours.width);
     o.region[3] = double(in.colours.height);
   }
+  // A flat terrain, or an image of one colour meshed for its error, has no
+  // curvature or luminance to sample by: its sample is uniform, and greedy
+  // insertion adds what the heights need (nothing where they are flat).
+  if(!in.density.values.empty() && all_zero(in.density.values) && (!in.heights.values.empty() || !in.intensity.values.empty()))
+    std::fill(in.density.values.begin(), in.density.values.end(), 1.);
   place(in, o);
   const std::size_t cells_x = (std::max)(in.heights.width, in.colours.width);
   const std::size_t cells_y = (std::max)(in.heights.height, in.colours.height);
@@ -820,6 +853,10 @@ void run(Options o)
   // error, does the rest.
   const bool greedy = !heights.values.empty() && (o.max_error > 0. || (o.points > 0. && o.base_fraction < 1.));
   const bool bounded = o.points_given || o.max_error == 0.;
+  if(greedy && o.points_given && o.points > double(heights.width * heights.height))
+    usage_error("--points " + text(o.points) + " is more than the " + std::to_string(heights.width * heights.height)
+                + " cells of " + in.file + " (" + std::to_string(heights.width) + " x " + std::to_string(heights.height)
+                + "): greedy insertion puts a vertex in a cell at most");
   const std::size_t budget = greedy && bounded ? std::size_t(o.points) : std::numeric_limits<std::size_t>::max();
   std::size_t n = std::size_t(o.points);
   if(greedy && n > 0)
@@ -831,6 +868,10 @@ void run(Options o)
   const std::unique_ptr<Sampler> sampler = in_context(o, [&] { return make_sampler(o, region, d, n); });
   time.sample = seconds_since(t0);
   const Plan plan{greedy, budget, sampler->density_scale() * (greedy && bounded && n ? double(budget) / double(n) : 1.)};
+  const double vertices = plan.bounded() ? double(plan.budget) : sampler->expected_number_of_points();
+  if(o.tiles && double(o.tiles) * double(o.tiles) > vertices)
+    usage_error("--tiles " + std::to_string(o.tiles) + " makes " + std::to_string(o.tiles * o.tiles) + " tiles for about "
+                + text(vertices) + " vertices: a tile must have one at least");
 
   if(streams(o, *sampler)) {
     write_streamed(o, *sampler, bar, start);
@@ -921,8 +962,10 @@ void run(Options o)
 
 } // namespace
 
-// A bad option: status 2; a file that cannot be read or written: status 1.
-int main(int argc, char** argv)
+// The whole tool on the command line `argv`: status 0; 2 for a bad option,
+// 1 for a file that cannot be read or written. Messages echo names and
+// values: their control bytes are escaped.
+int penrose_mesh(int argc, const char* const* argv)
 {
   try {
     const Options o = penrose_tools::parse(argc, argv);
@@ -931,16 +974,24 @@ int main(int argc, char** argv)
     if(o.threads > 0) threads.emplace(tbb::global_control::max_allowed_parallelism, std::size_t(o.threads));
 #endif
     if(o.help) std::cout << penrose_tools::usage_text;
-    else run(o);
+    else {
+      penrose_tools::check_files(o);
+      run(o);
+    }
   } catch(const penrose_tools::Usage_error& e) {
-    std::cerr << "penrose_mesh: " << e.what() << " (penrose_mesh --help lists the options)\n";
+    std::cerr << "penrose_mesh: " << CGAL::IO::internal::printable(e.what()) << " (penrose_mesh --help lists the options)\n";
     return 2;
   } catch(const std::bad_alloc&) {
     std::cerr << "penrose_mesh: out of memory\n";
     return 1;
   } catch(const std::exception& e) {
-    std::cerr << "penrose_mesh: " << e.what() << "\n";
+    std::cerr << "penrose_mesh: " << CGAL::IO::internal::printable(e.what()) << "\n";
     return 1;
   }
   return 0;
 }
+
+// fuzz/command_line.cpp includes this file and calls penrose_mesh() itself
+#ifndef PENROSE_MESH_NO_MAIN
+int main(int argc, char** argv) { return penrose_mesh(argc, argv); }
+#endif

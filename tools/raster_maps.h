@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <numeric>
 #include <vector>
 
@@ -189,14 +190,20 @@ inline std::vector<double> curvature_density(const std::vector<double>& heights,
 // Multiplies the density by 1 / (1 + d / d0), d the distance from the viewer
 // at (vx, vy) and d0 a fiftieth of the raster's diagonal: a vertex then errs
 // by about the same angle seen from the viewer, as in a view-dependent mesh.
-inline void weight_by_viewer(Raster<double>& r, double vx, double vy)
+// The weights are scaled so that the cell nearest the viewer keeps its
+// density: a viewer far away gives a nearly uniform weighting, where the
+// density underflowed to zero. Returns false if the distances overflow.
+inline bool weight_by_viewer(Raster<double>& r, double vx, double vy)
 {
   const double d0 = 0.02 * std::hypot(r.x1 - r.x0, r.y1 - r.y0);
+  auto distance = [&](std::size_t i, std::size_t j) { return std::hypot(r.x(i + 0.5) - vx, r.y(j + 0.5) - vy); };
+  double nearest = std::numeric_limits<double>::infinity();
   for(std::size_t j = 0; j < r.height; ++j)
-    for(std::size_t i = 0; i < r.width; ++i) {
-      const double dx = r.x(i + 0.5) - vx, dy = r.y(j + 0.5) - vy, d = std::sqrt(dx * dx + dy * dy);
-      r.values[j * r.width + i] /= 1. + d / d0;
-    }
+    for(std::size_t i = 0; i < r.width; ++i) nearest = std::min(nearest, distance(i, j));
+  if(!std::isfinite(nearest)) return false;
+  for(std::size_t j = 0; j < r.height; ++j)
+    for(std::size_t i = 0; i < r.width; ++i) r.values[j * r.width + i] *= (d0 + nearest) / (d0 + distance(i, j));
+  return true;
 }
 
 } // namespace penrose_tools

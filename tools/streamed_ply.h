@@ -19,7 +19,9 @@
 // The vertices go to the file as they are numbered and the faces to a
 // second file beside it, appended at the end; the counts, unknown until
 // then, are written into the header's fixed-width fields, and the file is
-// renamed over the target only when it is complete.
+// renamed over the target only when it is complete (both files are
+// CGAL::IO::internal::Output_file's temporary files; that of the faces is
+// never committed, and goes).
 
 #ifndef PENROSE_TOOLS_STREAMED_PLY_H
 #define PENROSE_TOOLS_STREAMED_PLY_H
@@ -27,13 +29,13 @@
 #include <CGAL/Penrose_Delaunay_border_2.h>
 #include <CGAL/Penrose_Delaunay_window_2.h>
 #include <CGAL/Penrose_importance_sampler.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/IO/internal/output_file.h>
 
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/parallel_pipeline.h>
 #include <tbb/task_arena.h>
 #endif
 
-#include <sys/stat.h>
 #include <sys/statvfs.h>
 #include <unistd.h>
 
@@ -108,9 +110,10 @@ public:
   Streamed_mesh write(const std::string& path, const std::function<void(double)>& progress)
   {
     check_free_space(path);
-    Temporary_file vertices(path), faces(path);
-    vertices_ = vertices.file;
-    faces_ = faces.file;
+    CGAL::IO::internal::Output_file vertices(path), faces(path);
+    vertices_ = vertices.stream();
+    faces_ = faces.stream();
+    for(std::FILE* f : {vertices_, faces_}) std::setvbuf(f, nullptr, _IOFBF, std::size_t(1) << 20);
     write_header();
     const CGAL::Penrose_Delaunay_border_2<K> border(s_);
     wait_for_owners(border.triangles(), border.vertices());
@@ -120,46 +123,12 @@ public:
       if(progress) progress(double(id + 1) / double(number_of_windows()));
     });
     if(!pending_.empty()) throw std::logic_error("streamed PLY: triangles left waiting for a window");
-    finish(vertices, faces);
-    vertices.keep_as(path);
+    finish(vertices_, faces_);
+    vertices.commit();
     return {next_vertex_, faces_written_, number_of_windows()};
   }
 
 private:
-  // A file beside the target, removed unless kept.
-  struct Temporary_file
-  {
-    std::string name;
-    std::FILE* file = nullptr;
-
-    explicit Temporary_file(const std::string& target)
-    {
-      std::string pattern = target + ".partial.XXXXXX";
-      const int fd = mkstemp(pattern.data());
-      if(fd < 0) throw std::runtime_error(target + ": cannot write beside it: " + std::strerror(errno));
-      name = pattern;
-      // mkstemp's file is the owner's only: give it the mode of a file made by open()
-      const mode_t mask = umask(0);
-      umask(mask);
-      fchmod(fd, 0666 & ~mask);
-      file = fdopen(fd, "w+b");
-      if(!file) { ::close(fd); std::remove(name.c_str()); throw std::runtime_error(target + ": cannot write"); }
-      std::setvbuf(file, nullptr, _IOFBF, std::size_t(1) << 20);
-    }
-    ~Temporary_file()
-    {
-      if(file) std::fclose(file);
-      if(!name.empty()) std::remove(name.c_str());
-    }
-    void keep_as(const std::string& target)
-    {
-      if(std::fclose(file) != 0) { file = nullptr; throw std::runtime_error(target + ": " + std::strerror(errno)); }
-      file = nullptr;
-      if(std::rename(name.c_str(), target.c_str()) != 0) throw std::runtime_error(target + ": " + std::strerror(errno));
-      name.clear();
-    }
-  };
-
   void check_free_space(const std::string& path) const
   {
     const std::size_t slash = path.find_last_of('/');
@@ -351,28 +320,28 @@ private:
 
   // Appends the faces to the vertices, in the kernel where it can, and
   // writes the counts into the header.
-  void finish(Temporary_file& vertices, Temporary_file& faces)
+  void finish(std::FILE* vertices, std::FILE* faces)
   {
-    if(std::fflush(faces.file) != 0 || std::fflush(vertices.file) != 0 || std::fseek(faces.file, 0, SEEK_SET) != 0)
+    if(std::fflush(faces) != 0 || std::fflush(vertices) != 0 || std::fseek(faces, 0, SEEK_SET) != 0)
       throw std::runtime_error(std::string("cannot write the mesh: ") + std::strerror(errno));
     bool copied = false;
 #ifdef __linux__
     loff_t from = 0;
-    for(ssize_t got; (got = copy_file_range(fileno(faces.file), &from, fileno(vertices.file), nullptr, std::size_t(1) << 30, 0)) != 0;) {
+    for(ssize_t got; (got = copy_file_range(fileno(faces), &from, fileno(vertices), nullptr, std::size_t(1) << 30, 0)) != 0;) {
       if(got < 0) break;  // not on this file system: copied by hand from `from` on
       copied = true;
     }
-    if(copied && std::fseek(vertices.file, 0, SEEK_END) != 0) throw std::runtime_error("cannot write the mesh");
-    if(std::fseek(faces.file, long(from), SEEK_SET) != 0) throw std::runtime_error("cannot read the mesh's faces back");
+    if(copied && std::fseek(vertices, 0, SEEK_END) != 0) throw std::runtime_error("cannot write the mesh");
+    if(std::fseek(faces, long(from), SEEK_SET) != 0) throw std::runtime_error("cannot read the mesh's faces back");
 #endif
     std::vector<char> buffer(std::size_t(1) << 22);
-    for(std::size_t got; (got = std::fread(buffer.data(), 1, buffer.size(), faces.file)) > 0;) put(vertices.file, buffer.data(), got);
-    if(std::ferror(faces.file)) throw std::runtime_error("cannot read the mesh's faces back");
+    for(std::size_t got; (got = std::fread(buffer.data(), 1, buffer.size(), faces)) > 0;) put(vertices, buffer.data(), got);
+    if(std::ferror(faces)) throw std::runtime_error("cannot read the mesh's faces back");
     const std::string h = header(next_vertex_, faces_written_);
-    if(h.size() != header_size_ || std::fflush(vertices.file) != 0 || std::fseek(vertices.file, 0, SEEK_SET) != 0)
+    if(h.size() != header_size_ || std::fflush(vertices) != 0 || std::fseek(vertices, 0, SEEK_SET) != 0)
       throw std::runtime_error(std::string("cannot write the mesh: ") + std::strerror(errno));
-    put(vertices.file, h.data(), h.size());
-    if(std::fflush(vertices.file) != 0) throw std::runtime_error(std::string("cannot write the mesh: ") + std::strerror(errno));
+    put(vertices, h.data(), h.size());
+    if(std::fflush(vertices) != 0) throw std::runtime_error(std::string("cannot write the mesh: ") + std::strerror(errno));
   }
 
   const Sampler& s_;

@@ -138,7 +138,7 @@ foreach(output --out-points:xy --out-mesh:off --out-mesh:ply --out-mesh:obj --sv
 endforeach()
 
 # A mesh without faces has no PSNR (null, not inf); a file name with a quote,
-# '<' and '&' stays a string in the JSON and an attribute in the SVG.
+# '<' and '&' stays a string in the JSON and a link in the SVG.
 file(COPY_FILE ${DATA}/test_image.png "${WORK}/q\"<&.png")
 run_mesh(--density "image:${WORK}/q\"<&.png" --points 1 --no-boundary --stats-json ${WORK}/names.json --svg ${WORK}/names.svg)
 file(READ ${WORK}/names.json json)
@@ -148,8 +148,39 @@ if(NOT rc EQUAL 0 OR json_error OR NOT density STREQUAL "${WORK}/q\"<&.png" OR N
   message(FATAL_ERROR "names.json (${rc}, ${json_error}): density '${density}', psnr '${psnr_type}': ${json}")
 endif()
 file(READ ${WORK}/names.svg svg)
-if(NOT svg MATCHES "xlink:href=\"[^\"]*q&quot;&lt;&amp;.png\"")
-  message(FATAL_ERROR "names.svg: the file name is not escaped")
+if(NOT svg MATCHES "xlink:href=\"q%22%3C%26.png\"")
+  message(FATAL_ERROR "names.svg: the file name is not percent-encoded")
+endif()
+
+# A name with %, #, ?, a space, a control character, a byte that is not
+# UTF-8 and an accent, its SVG in another folder: the link is relative to
+# the SVG's folder and percent-encoded (XML 1.0 forbids control characters
+# even escaped), the JSON valid UTF-8 (U+FFFD for the stray byte).
+string(ASCII 1 control)
+string(ASCII 255 latin1)
+set(odd "a%#? ${control}${latin1}é.png")
+file(MAKE_DIRECTORY ${WORK}/images ${WORK}/drawings)
+file(COPY_FILE ${DATA}/test_image.png "${WORK}/images/${odd}")
+run_mesh(--density "image:${WORK}/images/${odd}" --points 50 --svg ${WORK}/drawings/odd.svg --stats-json ${WORK}/odd.json)
+file(READ ${WORK}/drawings/odd.svg svg)
+file(READ ${WORK}/odd.json json HEX)
+string(HEX "/images/a%#? " name_start)
+if(NOT rc EQUAL 0 OR NOT svg MATCHES "xlink:href=\"../images/a%25%23%3F%20%01%FF%C3%A9.png\""
+   OR NOT json MATCHES "${name_start}5c7530303031efbfbdc3a92e706e67")  # \u0001, U+FFFD, é.png
+  message(FATAL_ERROR "odd name (${rc}): the link or the JSON string is wrong: ${err}")
+endif()
+if(PYTHON)  # parsed as XML and JSON, the link followed from the SVG's folder
+  execute_process(COMMAND ${PYTHON} -c [[
+import json, os, sys, urllib.parse, xml.dom.minidom
+svg, data, image = sys.argv[1:4]
+href = xml.dom.minidom.parse(svg).getElementsByTagName("image")[0].getAttribute("xlink:href")
+link = os.path.join(os.path.dirname(svg).encode(), urllib.parse.unquote_to_bytes(href))
+json.loads(open(data, "rb").read().decode("utf-8"))
+sys.exit(0 if os.path.samefile(link, image.encode("utf-8", "surrogateescape")) else 1)]]
+                  ${WORK}/drawings/odd.svg ${WORK}/odd.json "${WORK}/images/${odd}" RESULT_VARIABLE parsed ERROR_VARIABLE why)
+  if(NOT parsed EQUAL 0)
+    message(FATAL_ERROR "odd name: the SVG or the JSON does not parse, or the link does not lead to the image: ${why}")
+  endif()
 endif()
 
 # A drawing is 1024 pixels on the region's longer side (a 1 x 1024 PNG here,
@@ -286,3 +317,66 @@ math(EXPR limit "${left_1} * 3 / 4")
 if(NOT left_2 LESS limit OR left_1 LESS 800)
   message(FATAL_ERROR "--gamma 2: ${left_2} points left of 0.5, against ${left_1} with --gamma 1")
 endif()
+
+# A PGM whose sample exceeds its maxval (1, the sample '2') is refused; an
+# old-style run-length Radiance file is read (a pixel and a run of 3);
+# control bytes of an echoed header are escaped: one printable line.
+file(WRITE ${WORK}/maxval.pgm "P5\n1 1\n1\n2")
+run_mesh(--density image:${WORK}/maxval.pgm)
+if(NOT rc EQUAL 1 OR NOT err MATCHES "^penrose_mesh: [^\n]*maxval.pgm: sample 0 is 50, more than the maxval 1\n$")
+  message(FATAL_ERROR "maxval.pgm: expected status 1 naming the file, got ${rc}: ${err}")
+endif()
+string(ASCII 1 one)
+string(ASCII 3 three)
+file(WRITE ${WORK}/old_rle.hdr "#?RADIANCE\n\n-Y 1 +X 4\nABCx${one}${one}${one}${three}")
+run_mesh(--density image:${WORK}/old_rle.hdr --points 10 --out-points ${WORK}/old_rle.xy)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "old-style run-length encoded Radiance file: got ${rc}: ${err}")
+endif()
+string(ASCII 27 escape)
+string(ASCII 12 form_feed)
+file(WRITE ${WORK}/control.hdr "#?RADIANCE\nFORMAT=${escape}[31mred${form_feed}\r\n\n-Y 1 +X 1\n\n")
+run_mesh(--density image:${WORK}/control.hdr)
+if(NOT rc EQUAL 1 OR NOT err MATCHES "^penrose_mesh: [^\n]*control.hdr: [^\n]*unsupported FORMAT=\\\\x1b\\[31mred\\\\x0c\\\\x0d\\)\n$")
+  message(FATAL_ERROR "control.hdr: expected one printable line, got ${rc}: ${err}")
+endif()
+
+# A flat terrain, and a black image meshed for --reconstruct, have a zero
+# density: their sample is uniform, and they make a mesh.
+file(WRITE ${WORK}/flat.asc "ncols 12\nnrows 10\nxllcorner 0\nyllcorner 0\ncellsize 1\n")
+foreach(j RANGE 9)
+  file(APPEND ${WORK}/flat.asc "5 5 5 5 5 5 5 5 5 5 5 5\n")
+endforeach()
+file(WRITE ${WORK}/black.pgm "P5\n16 12\n255\n")
+execute_process(COMMAND sh -c "head -c 192 /dev/zero >> black.pgm" WORKING_DIRECTORY ${WORK})
+foreach(input "--terrain;${WORK}/flat.asc" "--density;image:${WORK}/black.pgm;--reconstruct;${WORK}/black.png")
+  run_mesh(${input} --points 60 --out-mesh ${WORK}/flat.off)
+  file(STRINGS ${WORK}/flat.off counts LIMIT_COUNT 2)
+  list(GET counts 1 counts)
+  if(NOT rc EQUAL 0 OR NOT counts MATCHES "^[1-9][0-9]* [1-9][0-9]* 0$")
+    message(FATAL_ERROR "${input}: expected a mesh, got ${rc} (${counts}): ${err}")
+  endif()
+endforeach()
+
+# A viewer far away weights the density almost uniformly (it underflowed to
+# zero); one whose distances overflow is named. Too many tiles for the
+# points, more points than a grid refined greedily has cells, and a --gamma
+# that makes the density zero are refused by name (status 2).
+file(WRITE ${WORK}/grey.pgm "P5\n4 4\n255\n@@@@@@@@@@@@@@@@")
+run_mesh(--terrain ${DATA}/terrain.png --points 100 --viewer 1e308 1e308 --out-mesh ${WORK}/viewer.off)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "--viewer 1e308 1e308: got ${rc}: ${err}")
+endif()
+foreach(c "--terrain;${DATA}/terrain.png;--viewer;1.7e308;1.7e308|--viewer 1.7e\\+308 1.7e\\+308: its distances to the region overflow"
+          "--density;ramp;--points;100;--tiles;1024;--out-mesh;${WORK}/t.off|--tiles 1024 makes 1048576 tiles for about 100 vertices"
+          "--terrain;${WORK}/flat.asc;--points;1e9|--points 1e\\+09 is more than the 120 cells of [^\n]*flat.asc"
+          "--terrain;${WORK}/flat.asc;--points;1000|--points 1000 is more than the 120 cells of [^\n]*flat.asc"
+          "--density;image:${WORK}/grey.pgm;--gamma;1e6|--gamma 1e\\+06: the density of [^\n]*grey.pgm raised to it is zero")
+  string(REPLACE "|" ";" c "${c}")
+  list(POP_BACK c why)
+  run_mesh(${c})
+  file(GLOB written ${WORK}/t_*)
+  if(NOT rc EQUAL 2 OR NOT err MATCHES "^penrose_mesh: ${why}[^\n]*\n$" OR written)
+    message(FATAL_ERROR "${c}: expected status 2 and one line about '${why}', got ${rc}: ${err}")
+  endif()
+endforeach()

@@ -9,6 +9,7 @@
 
 #include <CGAL/Penrose_Delaunay_triangulation_2.h>
 #include <CGAL/Penrose_Delaunay_triangulation_2/IO/height_field_io.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/IO/internal/output_file.h>
 #include <CGAL/Penrose_Delaunay_triangulation_2/IO/read_luminance_image.h>
 #include <CGAL/Penrose_Delaunay_triangulation_2/IO/read_rgb_image.h>
 #include <CGAL/Penrose_Delaunay_triangulation_2/IO/write_triangulation.h>
@@ -26,6 +27,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <functional>
 #include <set>
@@ -379,6 +381,77 @@ TEST(Image, BadFiles)
   expect_failure([](const std::string& f) { IO::read_luminance_image(f, 100); }, temp("noise.png"), "absurd dimensions");
 }
 
+// PNM samples above the maxval would be brighter than white.
+TEST(Image, PnmSamplesWithinTheirMaxval)
+{
+  auto read = [](const std::string& f) { IO::read_rgb_image(f); };
+  write_file(temp("maxval1.pgm"), std::string("P5 2 1 1\n\x00\xff", 11));
+  expect_failure(read, temp("maxval1.pgm"), "sample 1 is 255, more than the maxval 1");
+  write_file(temp("maxval256.pgm"), std::string("P5 1 1 256\n\xff\xff", 13));
+  expect_failure([](const std::string& f) { IO::read_height_field(f); }, temp("maxval256.pgm"),
+                 "sample 0 is 65535, more than the maxval 256");
+  write_file(temp("bits.pgm"), std::string("P5 2 1 1\n\x00\x01", 11));
+  const IO::Rgb_image bits = IO::read_rgb_image(temp("bits.pgm"));
+  EXPECT_EQ(bits.values, std::vector<float>({0.f, 0.f, 0.f, 1.f, 1.f, 1.f}));
+}
+
+// Old-style run-length pixels (1, 1, 1, n) repeat the pixel before n times,
+// n << 8 times when they follow one another, as Radiance reads them.
+TEST(Image, RadianceHdrOldStyleRuns)
+{
+  auto pixel = [](unsigned char r, unsigned char g, unsigned char b, unsigned char e) {
+    return std::string{char(r), char(g), char(b), char(e)};
+  };
+  const std::string p = pixel(128, 64, 32, 129), q = pixel(200, 100, 50, 130), run3 = pixel(1, 1, 1, 3);
+  // 4 x 2, flat: p and a run of 3; q, p and a run of 2
+  write_file(temp("old.hdr"), "#?RADIANCE\n\n-Y 2 +X 4\n" + p + run3 + q + p + pixel(1, 1, 1, 2));
+  const IO::Rgb_image img = IO::read_rgb_image(temp("old.hdr"));
+  auto value = [](const std::string& rgbe, int c) { return float(std::ldexp((unsigned char)rgbe[c], (unsigned char)rgbe[3] - 136)); };
+  const std::string expected[8] = {p, p, p, p, q, p, p, p};
+  for(int i = 0; i < 8; ++i)
+    for(int c = 0; c < 3; ++c) EXPECT_EQ(img.values[std::size_t(3 * i + c)], value(expected[i], c)) << i;
+  // 2 + (1 << 8) copies: 259 pixels
+  write_file(temp("long.hdr"), "#?RADIANCE\n\n-Y 1 +X 259\n" + q + pixel(1, 1, 1, 2) + pixel(1, 1, 1, 1));
+  const IO::Rgb_image long_run = IO::read_rgb_image(temp("long.hdr"));
+  ASSERT_EQ(long_run.width, 259u);
+  EXPECT_EQ(long_run.values[3 * 258], value(q, 0));
+  auto read = [](const std::string& f) { IO::read_rgb_image(f); };
+  write_file(temp("first.hdr"), "#?RADIANCE\n\n-Y 1 +X 2\n" + run3 + p);
+  expect_failure(read, temp("first.hdr"), "corrupt Radiance HDR old-style run");
+  write_file(temp("past.hdr"), "#?RADIANCE\n\n-Y 1 +X 2\n" + p + run3);
+  expect_failure(read, temp("past.hdr"), "corrupt Radiance HDR old-style run");
+}
+
+// A header echoed in a message has its control bytes escaped: the message
+// is one line and leaves the terminal's colours alone.
+TEST(Image, EchoedHeadersArePrintable)
+{
+  auto read = [](const std::string& f) { IO::read_rgb_image(f); };
+  write_file(temp("esc.hdr"), "#?RADIANCE\nFORMAT=\x1b[31mred\x0c\n\n-Y 1 +X 1\n\x01\x01\x01\x80");
+  expect_failure(read, temp("esc.hdr"), "unsupported FORMAT=\\x1b[31mred\\x0c");
+  write_file(temp("cr.hdr"), "#?RADIANCE\n\n-Y 1 +X 1\r\n\x01\x01\x01\x80");
+  expect_failure(read, temp("cr.hdr"), "unsupported resolution line '-Y 1 +X 1\\x0d'");
+}
+
+// Devices and pipes never end, and a file may hold more than its header's
+// dimensions can take: the readers stop at what the header allows.
+TEST(Image, ReadsBoundedByTheHeader)
+{
+  expect_failure([](const std::string& f) { IO::read_rgb_image(f); }, "/dev/zero", "cannot read as an image");
+  expect_failure([](const std::string& f) { IO::read_height_field(f); }, "/dev/zero", "cannot read as an image");
+  EXPECT_THROW(IO::read_height_field("/dev/urandom"), std::runtime_error);
+  std::string grid = "ncols 12\nnrows 10\nxllcorner 0\nyllcorner 0\ncellsize 1\n";
+  const std::size_t header = grid.size();
+  while(grid.size() < (1 << 20)) grid += "1 2 3 4 5 6 7 8 9 10 11 12\n";
+  write_file(temp("long.asc"), grid);
+  expect_failure([](const std::string& f) { IO::read_height_field(f); }, temp("long.asc"),
+                 "more than the " + std::to_string(header + 64 * 120) + " bytes that its 12 x 10 cells");
+  // a PNM file may hold more images: the first is read, the rest ignored
+  write_file(temp("more.pgm"), "P5 4 4 255\n" + std::string(16, '\x07') + std::string(1 << 17, '\x01'));
+  const IO::Height_field first = IO::read_height_field(temp("more.pgm"));
+  EXPECT_EQ(first.values, std::vector<double>(16, 7.));
+}
+
 // ---------------------------------------------------------------- meshes
 
 typedef std::array<std::size_t, 3> Face;
@@ -469,6 +542,71 @@ TEST(Mesh, WriterFailures)
   some.push_back(t.finite_vertices_begin());
   expect_failure([&](const std::string& f) { IO::write_triangulation(f, t, some); }, temp("partial.off"),
                  "not listed");
+}
+
+// The files beside `file` whose names start with '.' + its name: the temporary ones.
+std::vector<std::string> temporaries_of(const std::string& file)
+{
+  namespace fs = std::filesystem;
+  const std::string prefix = "." + fs::path(file).filename().string() + ".";
+  std::vector<std::string> found;
+  for(const auto& entry : fs::directory_iterator(fs::path(file).parent_path()))
+    if(entry.path().filename().string().rfind(prefix, 0) == 0) found.push_back(entry.path().string());
+  return found;
+}
+
+// A file is replaced only by a complete one: until commit(), the old file
+// stays; an Output_file destroyed without commit() (an exception while
+// writing) leaves no temporary file behind.
+TEST(Output, ReplacedOnlyWhenComplete)
+{
+  const std::string file = temp("out.txt");
+  write_file(file, "old\n");
+  {
+    IO::internal::Output_file out(file);
+    out.write("new, half");
+    EXPECT_EQ(read_file(file), "old\n");
+    EXPECT_EQ(temporaries_of(file).size(), 1u);
+  }
+  EXPECT_EQ(read_file(file), "old\n");
+  EXPECT_TRUE(temporaries_of(file).empty());
+  IO::internal::Output_file out(file);
+  out.write("new\n");
+  std::fprintf(out.stream(), "%d\n", 42);
+  out.commit();
+  EXPECT_EQ(read_file(file), "new\n42\n");
+  EXPECT_TRUE(temporaries_of(file).empty());
+}
+
+// Through a symbolic link, the file linked to is replaced and the link
+// kept; the permissions of the file replaced are kept.
+TEST(Output, LinksFollowedAndPermissionsKept)
+{
+  namespace fs = std::filesystem;
+  const std::string target = temp("target.txt"), link = temp("link.txt");
+  write_file(target, "old\n");
+  fs::permissions(target, fs::perms::owner_read | fs::perms::owner_write);
+  fs::remove(link);
+  fs::create_symlink(target, link);
+  IO::internal::write_bytes(link, "new\n");
+  EXPECT_TRUE(fs::is_symlink(link));
+  EXPECT_EQ(read_file(target), "new\n");
+  EXPECT_EQ(fs::status(target).permissions() & fs::perms::all, fs::perms::owner_read | fs::perms::owner_write);
+  // a file that its permissions protect is not replaced (a rename could)
+  fs::permissions(target, fs::perms::owner_read);
+  expect_failure([](const std::string& f) { IO::internal::write_bytes(f, "newer\n"); }, target, "read-only");
+  EXPECT_EQ(read_file(target), "new\n");
+  fs::permissions(target, fs::perms::owner_read | fs::perms::owner_write);
+}
+
+// A device is written in place (a rename cannot replace it), and a failed
+// write names the file and its cause.
+TEST(Output, DevicesWrittenInPlace)
+{
+  IO::internal::write_bytes("/dev/null", "nothing\n");
+  EXPECT_TRUE(std::filesystem::is_character_file("/dev/null"));
+  expect_failure([](const std::string& f) { IO::internal::write_bytes(f, std::string(1 << 16, 'x')); }, "/dev/full",
+                 "cannot write (No space left on device)");
 }
 
 } // namespace

@@ -165,6 +165,25 @@ TEST(Sampler, RejectsBadDensities)
   }
 }
 
+// A bad density_upper_bound is named as the bound, over its box, not taken
+// for the density at the box's centre.
+TEST(Sampler, RejectsBadDensityUpperBounds)
+{
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for(double bad : {-1., nan}) {
+    const std::string m = message_of_invalid_argument([&] {
+      Sampler s(unit_square, [](const Point&) { return 1.; },
+                CGAL::parameters::density_upper_bound([bad](const Epick::Iso_rectangle_2&) { return bad; })
+                  .number_of_output_points(1000));
+      std::vector<Point> p;
+      s(std::back_inserter(p));
+    });
+    EXPECT_EQ(m.rfind("Penrose_importance_sampler: density_upper_bound over [", 0), 0u) << m;
+    EXPECT_NE(m.find(std::string("] is ") + (bad == -1. ? "-1" : "nan")), std::string::npos) << m;
+    EXPECT_EQ(m.find("density at"), std::string::npos) << m;
+  }
+}
+
 TEST(Sampler, RejectsBadRegionsAndParameters)
 {
   auto one = [](const Point&) { return 1.; };

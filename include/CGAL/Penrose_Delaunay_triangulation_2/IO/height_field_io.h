@@ -10,6 +10,8 @@
 
 #include <CGAL/Penrose_Delaunay_triangulation_2/IO/internal/file_names.h>
 #include <CGAL/Penrose_Delaunay_triangulation_2/IO/internal/image_checks.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/IO/internal/output_file.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/IO/internal/read_radiance_hdr.h>
 
 #include <png.h>
 #include <stb/stb_image.h>
@@ -29,6 +31,7 @@
 #include <limits>
 #include <memory>
 #include <new>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <system_error>
@@ -43,8 +46,9 @@ namespace IO {
 The most pixels, or cells, that the readers of images and height fields
 accept unless told otherwise: 2^26 (8192 x 8192). A file whose header claims
 more is refused before anything is allocated; the `max_pixels` (`max_cells`)
-argument of each reader raises the limit. A raster of that size takes about
-2 GB in `penrose_mesh` (its `--max-pixels` option sets the limit there).
+argument of each reader raises the limit. At that size, `penrose_mesh` takes
+up to 1.5 GiB for an RGB image, 2.5 GiB to mesh one for its reconstruction,
+0.7 GiB for a 16-bit terrain (its `--max-pixels` option sets the limit there).
 */
 constexpr std::size_t default_max_pixels = std::size_t(1) << 26;
 
@@ -75,26 +79,85 @@ struct Height_field
 
 namespace internal {
 
-// The whole file, or an exception that tells why not (missing, a directory,
-// unreadable, empty). A regular file is read at once into a buffer of its
-// size (a 4096^2 grid's text, 100 MB, grown block by block was copied about
-// twice over); what is left, or a pipe, in blocks.
-inline std::string read_whole_file(const std::string& file)
+// How far read_file() reads a file: `bytes` at most, beyond which the rest
+// is ignored (a PNM file may hold several images) or refused, as more than
+// the `dimensions` that its header claims can take.
+struct Read_limit
+{
+  std::size_t bytes;
+  bool rest_ignored;
+  std::string dimensions;
+};
+
+// `bytes`, in a std::size_t, or the largest one: the limits grow with pixel
+// counts up to 10^18 (--max-pixels).
+inline std::size_t saturated(double bytes)
+{
+  return bytes < double((std::numeric_limits<std::size_t>::max)()) ? std::size_t(bytes)
+                                                                   : (std::numeric_limits<std::size_t>::max)();
+}
+
+// The most bytes that the header of a file may take, metadata before the
+// pixels included: past them, the file is refused.
+constexpr std::size_t most_header_bytes = std::size_t(1) << 24;
+
+/*
+The bytes of `file`, read in bounded blocks: a device or a pipe
+(/dev/zero, /dev/urandom) may never end, and a file may be larger than its
+header's dimensions can take. `limit(head)` is given the first 64 KiB (a
+file that ends before is read whole, and its decoder has the last word); it
+returns a Read_limit from the dimensions that the header claims, checked
+against the pixel limit, or nothing while the header is incomplete (the
+head then doubles, up to most_header_bytes), and throws if the head is not
+of its format. Then a regular file is read at once into a buffer of its
+size (a 4096^2 grid's text, 100 MB, grown block by block was copied about
+twice over), a pipe block by block; the exception tells why not (missing, a
+directory, unreadable, empty, too large).
+*/
+template <class Limit>
+std::string read_file(const std::string& file, const Limit& limit)
 {
   std::error_code error;
   if(std::filesystem::is_directory(file, error)) throw file_error(file, "is a directory");
   std::ifstream in(file, std::ios::binary);
   if(!in) throw file_error(file, std::string("cannot open (") + std::strerror(errno) + ")");
+  const std::uintmax_t size = std::filesystem::is_regular_file(file, error) ? std::filesystem::file_size(file, error) : 0;
+  const bool sized = !error && size > 0;
   std::string s;
-  char block[1 << 16];
-  try {
-    const std::uintmax_t size = std::filesystem::is_regular_file(file, error) ? std::filesystem::file_size(file, error) : 0;
-    if(!error && size > 0 && size < s.max_size()) {
-      s.resize(std::size_t(size));
-      in.read(&s[0], std::streamsize(size));
-      s.resize(std::size_t(in.gcount()));
+  // Reads until `s` holds `total` bytes, or the file ends first (false).
+  auto read_to = [&](std::size_t total) {
+    while(s.size() < total) {
+      const std::size_t at = s.size();
+      const std::size_t n = sized && size > at ? std::size_t((std::min<std::uintmax_t>)(total, size)) - at
+                                               : (std::min)(total - at, std::size_t(1) << 20);
+      if(in.peek() == std::ifstream::traits_type::eof()) return false;
+      s.resize(at + n);
+      in.read(&s[at], std::streamsize(n));
+      s.resize(at + std::size_t(in.gcount()));
+      if(s.size() < at + n) return false;
     }
-    while(in.read(block, sizeof block) || in.gcount() > 0) s.append(block, std::size_t(in.gcount()));
+    return true;
+  };
+  try {
+    std::optional<Read_limit> most;
+    for(std::size_t head = std::size_t(1) << 16; !most; head *= 2) {
+      if(!read_to(head)) break;
+      most = limit(static_cast<const std::string&>(s));
+      if(!most && head >= most_header_bytes)
+        throw file_error(file, "cannot read as an image (no complete header in its first "
+                               + std::to_string(most_header_bytes >> 20) + " MiB)");
+    }
+    if(most) {
+      auto too_large = [&] {
+        return file_error(file, "more than the " + std::to_string(most->bytes) + " bytes that its "
+                                + most->dimensions + " can take");
+      };
+      if(most->rest_ignored) {
+        if(s.size() > most->bytes) s.resize(most->bytes);
+      } else if(s.size() > most->bytes || (sized && size > most->bytes)) throw too_large();
+      if(sized) s.reserve(std::size_t((std::min<std::uintmax_t>)(size, most->bytes)));
+      if(read_to(most->bytes) && !most->rest_ignored && in.peek() != std::ifstream::traits_type::eof()) throw too_large();
+    }
   } catch(const std::bad_alloc&) {
     throw file_error(file, "too large to hold in memory");
   }
@@ -112,12 +175,19 @@ struct Pnm
 {
   std::size_t width = 0, height = 0, channels = 0;
   double maxval = 0.;
+  std::size_t pixels_at = 0;  // where the samples start
   std::vector<std::uint16_t> samples;
+
+  std::size_t sample_bytes() const { return maxval > 255. ? 2 : 1; }
 };
 
-inline Pnm read_pnm(const std::string& file, const std::string& bytes, std::size_t max_pixels)
+// The header of a PNM file from its `bytes`, or nothing if they end within
+// it and are not `whole` (the head of a file being read).
+inline std::optional<Pnm> pnm_header(const std::string& file, const std::string& bytes, std::size_t max_pixels,
+                                     bool whole)
 {
   std::size_t at = 2;
+  bool incomplete = false;
   auto field = [&](const char* name) {
     while(at < bytes.size() && (std::isspace((unsigned char)bytes[at]) || bytes[at] == '#'))
       if(bytes[at] == '#') at = bytes.find('\n', at) == std::string::npos ? bytes.size() : bytes.find('\n', at);
@@ -125,27 +195,78 @@ inline Pnm read_pnm(const std::string& file, const std::string& bytes, std::size
     double v = 0.;
     const std::size_t first = at;
     for(; at < bytes.size() && std::isdigit((unsigned char)bytes[at]); ++at) v = 10. * v + (bytes[at] - '0');
-    if(at == first) throw file_error(file, std::string("truncated or corrupt PNM header (no ") + name + ")");
+    incomplete = incomplete || at == bytes.size();
+    if(at == first && !incomplete) throw file_error(file, std::string("truncated or corrupt PNM header (no ") + name + ")");
     return v;
   };
   Pnm p;
   p.channels = bytes[1] == '5' ? 1 : 3;
   const double w = field("width"), h = field("height");
   p.maxval = field("maxval");
+  if(incomplete && !whole) return std::nullopt;
+  if(incomplete) throw file_error(file, "truncated PNM header");
   check_dimensions(file, w, h, max_pixels);
   if(p.maxval < 1. || p.maxval > 65535.) throw file_error(file, "PNM maxval must be in [1, 65535]");
-  if(at >= bytes.size() || !std::isspace((unsigned char)bytes[at])) throw file_error(file, "truncated PNM header");
-  ++at;
+  if(!std::isspace((unsigned char)bytes[at])) throw file_error(file, "truncated PNM header");
+  p.pixels_at = at + 1;
   p.width = std::size_t(w);
   p.height = std::size_t(h);
-  const std::size_t n = p.width * p.height * p.channels, size = p.maxval > 255. ? 2 : 1;
+  return p;
+}
+
+inline Pnm read_pnm(const std::string& file, const std::string& bytes, std::size_t max_pixels)
+{
+  Pnm p = *pnm_header(file, bytes, max_pixels, true);
+  const std::size_t n = p.width * p.height * p.channels, size = p.sample_bytes(), at = p.pixels_at;
   if(bytes.size() - at < n * size)
     throw file_error(file, "truncated: " + std::to_string(bytes.size() - at) + " bytes of pixels, "
                            + std::to_string(n * size) + " expected");
   p.samples.resize(n);
   const unsigned char* d = reinterpret_cast<const unsigned char*>(bytes.data() + at);
-  for(std::size_t k = 0; k < n; ++k) p.samples[k] = size == 2 ? std::uint16_t(d[2 * k] << 8 | d[2 * k + 1]) : d[k];
+  for(std::size_t k = 0; k < n; ++k) {
+    p.samples[k] = size == 2 ? std::uint16_t(d[2 * k] << 8 | d[2 * k + 1]) : d[k];
+    if(p.samples[k] > p.maxval)  // it would be brighter than white
+      throw file_error(file, "sample " + std::to_string(k) + " is " + std::to_string(p.samples[k])
+                             + ", more than the maxval " + std::to_string(int(p.maxval)));
+  }
   return p;
+}
+
+// How far to read an image file from its `head` (see read_file()): a PNM
+// file to its last sample, a Radiance file to its last scanline at 8 bytes
+// a pixel (runs of one, the worst case of its run-length encoding), a PNG
+// or JPEG file to 16 bytes a pixel plus most_header_bytes of metadata (a
+// PNG's 8 bytes a pixel at most, 16-bit RGBA, doubled for the worst case of
+// its compression and chunks).
+inline std::optional<Read_limit> image_read_limit(const std::string& file, const std::string& head,
+                                                  std::size_t max_pixels)
+{
+  const Image_format format = image_format(head);
+  auto pixels = [](std::size_t w, std::size_t h) { return std::to_string(w) + " x " + std::to_string(h) + " pixels"; };
+  if(format == Image_format::pnm) {
+    const std::optional<Pnm> p = pnm_header(file, head, max_pixels, false);
+    if(!p) return std::nullopt;
+    return Read_limit{saturated(double(p->pixels_at) + double(p->width) * double(p->height) * double(p->channels)
+                                                       * double(p->sample_bytes())),
+                      true, pixels(p->width, p->height)};
+  }
+  if(format == Image_format::radiance) {
+    Radiance_image img;
+    const std::size_t at = radiance_header(file, head, max_pixels, img);
+    if(at == std::string::npos) return std::nullopt;
+    return Read_limit{saturated(double(at) + double(img.height) * (4. + 8. * double(img.width))), true,
+                      pixels(img.width, img.height)};
+  }
+  if(format != Image_format::png && format != Image_format::jpeg) throw unknown_format(file);
+  int w = 0, h = 0, c = 0;
+  if(!stbi_info_from_memory(reinterpret_cast<const stbi_uc*>(head.data()), int(head.size()), &w, &h, &c)) {
+    if(format == Image_format::jpeg) return std::nullopt;  // its frame header may lie further
+    const char* reason = stbi_failure_reason();
+    throw file_error(file, std::string("cannot read as an image (") + (reason ? reason : "unknown format") + ")");
+  }
+  check_dimensions(file, w, h, max_pixels);
+  return Read_limit{saturated(16. * double(w) * double(h) + double(most_header_bytes)), false,
+                    pixels(std::size_t(w), std::size_t(h))};
 }
 
 } // namespace internal
@@ -203,31 +324,45 @@ inline void read_grid_rows(const std::string& file, const std::string& text, std
     throw file_error(file, "truncated: " + std::to_string(row) + " of " + std::to_string(hf.height) + " rows");
 }
 
-// The grid of read_ESRI_ASCII_grid() from the text of `file`.
-inline Height_field parse_ESRI_ASCII_grid(const std::string& file, const std::string& text, std::size_t max_cells)
+// The header of an ESRI grid: its extent, NODATA_value, and where the rows start.
+struct Asc_header
+{
+  Height_field grid;  // without its values
+  double nodata = NAN;
+  std::size_t rows_at = 0;
+};
+
+// The header of an ESRI grid from `text`, or nothing if the text ends within
+// it and is not `whole` (the head of a file being read).
+inline std::optional<Asc_header> asc_header(const std::string& file, const std::string& text, std::size_t max_cells,
+                                            bool whole)
 {
   const char* p = text.c_str();
+  const char* const text_end = p + text.size();
   auto fail = [&](const std::string& why) { return file_error(file, why); };
-  double ncols = -1., nrows = -1., xll = NAN, yll = NAN, cell = -1., nodata = NAN;
+  double ncols = -1., nrows = -1., xll = NAN, yll = NAN, cell = -1.;
   bool x_centre = false, y_centre = false;
-  // header: "keyword value" lines, until the first line that starts with a number
+  Asc_header header;
+  // "keyword value" lines, until the first line that starts with a number
   for(;;) {
     while(std::isspace((unsigned char)*p)) ++p;
+    if(p == text_end && !whole) return std::nullopt;
     if(!std::isalpha((unsigned char)*p)) break;
     const char* k = p;
     while(std::isalpha((unsigned char)*p) || *p == '_') ++p;
     const std::string key = lowercase(std::string(k, p));
     char* end = nullptr;
     const double v = std::strtod(p, &end);
-    if(end == p) throw fail("header field '" + key + "' has no numeric value");
+    if(end == text_end && !whole) return std::nullopt;  // the number may go on
+    if(end == p) throw fail("header field '" + printable(key, 40) + "' has no numeric value");
     p = end;
     if(key == "ncols") ncols = v;
     else if(key == "nrows") nrows = v;
     else if(key == "xllcorner" || key == "xllcenter") { xll = v; x_centre = key == "xllcenter"; }
     else if(key == "yllcorner" || key == "yllcenter") { yll = v; y_centre = key == "yllcenter"; }
     else if(key == "cellsize") cell = v;
-    else if(key == "nodata_value") nodata = v;
-    else throw fail("not an ESRI ASCII grid (unknown header field '" + key + "')");
+    else if(key == "nodata_value") header.nodata = v;
+    else throw fail("not an ESRI ASCII grid (unknown header field '" + printable(key, 40) + "')");
   }
   if(ncols < 0. || nrows < 0.) throw fail("not an ESRI ASCII grid (no ncols / nrows header)");
   if(std::isnan(xll) || std::isnan(yll)) throw fail("header lacks xllcorner / yllcorner");
@@ -235,7 +370,7 @@ inline Height_field parse_ESRI_ASCII_grid(const std::string& file, const std::st
   if(ncols != std::floor(ncols) || nrows != std::floor(nrows)) throw fail("ncols and nrows must be integers");
   check_dimensions(file, ncols, nrows, max_cells);
 
-  Height_field hf;
+  Height_field& hf = header.grid;
   hf.width = std::size_t(ncols);
   hf.height = std::size_t(nrows);
   hf.x0 = x_centre ? xll - 0.5 * cell : xll;
@@ -245,17 +380,30 @@ inline Height_field parse_ESRI_ASCII_grid(const std::string& file, const std::st
   if(!(std::isfinite(hf.x0) && std::isfinite(hf.y0) && std::isfinite(hf.x1) && std::isfinite(hf.y1)
        && hf.x1 > hf.x0 && hf.y1 > hf.y0))
     throw fail("the extent from xllcorner, yllcorner and cellsize is not finite or is empty");
+  header.rows_at = std::size_t(p - text.c_str());
+  return header;
+}
+
+// The most bytes that a value of a grid takes, its blanks included: past
+// them a file is refused (17 significant digits and an exponent take 24).
+constexpr double most_bytes_a_cell = 64.;
+
+// The grid of read_ESRI_ASCII_grid() from the text of `file`.
+inline Height_field parse_ESRI_ASCII_grid(const std::string& file, const std::string& text, std::size_t max_cells)
+{
+  Asc_header header = *asc_header(file, text, max_cells, true);
+  Height_field hf = std::move(header.grid);
   const std::size_t n = hf.width * hf.height;
-  if(text.size() < 2 * n) throw fail("truncated: " + std::to_string(text.size()) + " bytes cannot hold "
-                                     + std::to_string(n) + " values");
+  if(text.size() < 2 * n) throw file_error(file, "truncated: " + std::to_string(text.size()) + " bytes cannot hold "
+                                                 + std::to_string(n) + " values");
   hf.values.resize(n);
-  read_grid_rows(file, text, std::size_t(p - text.c_str()), hf);
+  read_grid_rows(file, text, header.rows_at, hf);
   double lowest = std::numeric_limits<double>::infinity();
   for(double v : hf.values)
-    if(v != nodata) lowest = (std::min)(lowest, v);
-  if(lowest == std::numeric_limits<double>::infinity()) throw fail("every cell is NODATA");
+    if(v != header.nodata) lowest = (std::min)(lowest, v);
+  if(lowest == std::numeric_limits<double>::infinity()) throw file_error(file, "every cell is NODATA");
   for(double& v : hf.values)
-    if(v == nodata) v = lowest;
+    if(v == header.nodata) v = lowest;
   return hf;
 }
 
@@ -305,11 +453,22 @@ so that a DEM clipped to a coastline or a border still makes a closed surface.
 file, a directory, a header field missing or invalid, an extent that is not
 finite, absurd dimensions (more than `max_cells` cells), a value that is not
 a finite number, a row of more or fewer than `ncols` values or more rows
-than `nrows` (naming the line), too few rows, or no data.
+than `nrows` (naming the line), too few rows, no data, or more than 64 bytes
+a cell. The file is read no further than that: a device or a pipe that does
+not end is refused once the header's dimensions are passed.
 */
 inline Height_field read_ESRI_ASCII_grid(const std::string& file, std::size_t max_cells = default_max_pixels)
 {
-  return internal::parse_ESRI_ASCII_grid(file, internal::read_whole_file(file), max_cells);
+  const std::string text = internal::read_file(file, [&](const std::string& head) -> std::optional<internal::Read_limit> {
+    const std::optional<internal::Asc_header> h = internal::asc_header(file, head, max_cells, false);
+    if(!h) return std::nullopt;
+    return internal::Read_limit{internal::saturated(double(h->rows_at) + internal::most_bytes_a_cell
+                                                    * double(h->grid.width) * double(h->grid.height)),
+                                false, std::to_string(h->grid.width) + " x " + std::to_string(h->grid.height)
+                                       + " cells at " + std::to_string(int(internal::most_bytes_a_cell))
+                                       + " bytes a cell"};
+  });
+  return internal::parse_ESRI_ASCII_grid(file, text, max_cells);
 }
 
 /*!
@@ -320,12 +479,18 @@ over the rectangle [0, width] x [0, height]. (A grey JPEG is read too.)
 
 \throws std::runtime_error naming the file and the problem: missing, empty,
 a directory, not a PNG, JPEG or PGM image, colour, absurd dimensions (more
-than `max_cells` pixels, or more than the file's size can hold), truncated
-or corrupt.
+than `max_cells` pixels, or more than the file's size can hold), a PGM
+sample above its maxval, truncated or corrupt, or larger than its
+dimensions can take (a PNG or JPEG file: 16 bytes a pixel and 16 MiB of
+metadata; a PGM file is read to its last sample). The file is read no
+further than that, so that a device or a pipe that does not end is refused.
 */
 inline Height_field read_height_image(const std::string& file, std::size_t max_cells = default_max_pixels)
 {
-  return internal::decode_height_image(file, internal::read_whole_file(file), max_cells);
+  const std::string bytes = internal::read_file(file, [&](const std::string& head) {
+    return internal::image_read_limit(file, head, max_cells);
+  });
+  return internal::decode_height_image(file, bytes, max_cells);
 }
 
 /// \ingroup PkgPenroseDelaunayTriangulation2IO
@@ -338,14 +503,6 @@ inline Height_field read_height_field(const std::string& file, std::size_t max_c
 }
 
 namespace internal {
-
-inline void write_bytes(const std::string& file, const std::string& bytes)
-{
-  std::ofstream out(file, std::ios::binary);
-  out.write(bytes.data(), std::streamsize(bytes.size()));
-  out.close();
-  if(!out) throw file_error(file, "cannot write");
-}
 
 // A height as a 16-bit sample, rounded and clamped to [0, 65535].
 inline std::uint16_t sample_16(double height)

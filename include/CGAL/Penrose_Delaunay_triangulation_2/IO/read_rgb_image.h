@@ -8,7 +8,6 @@
 #define CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_IO_READ_RGB_IMAGE_H
 
 #include <CGAL/Penrose_Delaunay_triangulation_2/IO/height_field_io.h>
-#include <CGAL/Penrose_Delaunay_triangulation_2/IO/internal/read_radiance_hdr.h>
 
 #include <stb/stb_image.h>
 
@@ -94,11 +93,18 @@ Radiance HDR by the package, every read checked against the bytes left.
 \throws std::runtime_error naming the file and the problem: missing, empty,
 a directory, not an image of these formats, absurd dimensions (more than
 `max_pixels`, see `default_max_pixels`, or more than the file's size can
-hold), truncated or corrupt.
+hold), a PNM sample above its maxval, truncated or corrupt, or larger than
+its dimensions can take (a PNG or JPEG file: 16 bytes a pixel and 16 MiB of
+metadata; PNM and Radiance files are read to their last pixel). The file is
+read no further than that, so that a device or a pipe that does not end is
+refused.
 */
 inline Rgb_image read_rgb_image(const std::string& file, std::size_t max_pixels = default_max_pixels)
 {
-  return internal::decode_rgb_image(file, internal::read_whole_file(file), max_pixels);
+  const std::string bytes = internal::read_file(file, [&](const std::string& head) {
+    return internal::image_read_limit(file, head, max_pixels);
+  });
+  return internal::decode_rgb_image(file, bytes, max_pixels);
 }
 
 /// \ingroup PkgPenroseDelaunayTriangulation2IO

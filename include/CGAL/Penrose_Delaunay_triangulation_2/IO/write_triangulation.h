@@ -8,6 +8,7 @@
 #define CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_IO_WRITE_TRIANGULATION_H
 
 #include <CGAL/Penrose_Delaunay_triangulation_2/IO/internal/file_names.h>
+#include <CGAL/Penrose_Delaunay_triangulation_2/IO/internal/output_file.h>
 
 #include <CGAL/Unique_hash_map.h>
 #include <CGAL/number_utils.h>
@@ -16,7 +17,6 @@
 #include <charconv>
 #include <cstdint>
 #include <cstring>
-#include <fstream>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -41,16 +41,13 @@ std::array<double, 3> mesh_point(const Point& p)
 A mesh file written through a buffer: numbers as the shortest decimal that
 reads back as the same double (std::to_chars), binary values little-endian
 whatever the machine. CGAL's writers, through streams with 17 digits, took as
-long as a tenth of the greedy refinement of a 10^6-vertex terrain.
+long as a tenth of the greedy refinement of a 10^6-vertex terrain. The file
+replaces the target only once complete (see Output_file).
 */
 class Mesh_file_writer
 {
 public:
-  explicit Mesh_file_writer(const std::string& file) : file_(file), out_(file, std::ios::binary)
-  {
-    if(!out_) throw file_error(file_, "cannot write");
-    buffer_.reserve(capacity + 64);
-  }
+  explicit Mesh_file_writer(const std::string& file) : out_(file) { buffer_.reserve(capacity + 64); }
 
   void text(const char* s) { append(s, std::strlen(s)); }
 
@@ -84,8 +81,7 @@ public:
   void close()
   {
     flush();
-    out_.close();
-    if(!out_) throw file_error(file_, "cannot write");
+    out_.commit();
   }
 
 private:
@@ -99,13 +95,11 @@ private:
 
   void flush()
   {
-    out_.write(buffer_.data(), std::streamsize(buffer_.size()));
+    out_.write(buffer_);
     buffer_.clear();
-    if(!out_) throw file_error(file_, "cannot write");
   }
 
-  std::string file_;
-  std::ofstream out_;
+  Output_file out_;
   std::string buffer_;
 };
 

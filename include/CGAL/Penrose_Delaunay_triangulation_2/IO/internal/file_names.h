@@ -18,9 +18,27 @@ namespace CGAL {
 namespace IO {
 namespace internal {
 
+// `s` as one printable line: control bytes (ESC, CR, form feed, ...) as
+// \xHH, so that a message that echoes a file name or a header neither
+// breaks into lines nor changes the terminal; cut after `most` bytes.
+inline std::string printable(const std::string& s, std::size_t most = std::string::npos)
+{
+  std::string p;
+  for(std::size_t k = 0; k < s.size() && k < most; ++k) {
+    const unsigned char c = static_cast<unsigned char>(s[k]);
+    if(c >= 0x20 && c != 0x7f) p += char(c);
+    else {
+      char hex[8];
+      std::snprintf(hex, sizeof hex, "\\x%02x", c);
+      p += hex;
+    }
+  }
+  return s.size() > most ? p + "..." : p;
+}
+
 inline std::runtime_error file_error(const std::string& file, const std::string& why)
 {
-  return std::runtime_error(file + ": " + why);
+  return std::runtime_error(printable(file) + ": " + why);
 }
 
 // The dimensions that a header claims, refused before anything is allocated.

@@ -4,13 +4,15 @@
 // Reads a Radiance HDR (RGBE) image, flat or run-length encoded, with every
 // read checked against the bytes left: stb_image 2.27 (Debian 12) loops
 // forever on a run-length encoded file cut short, and leaves the pixels of a
-// flat one cut short uninitialised. The values are those stb_image gives.
+// flat one cut short uninitialised. The values are those stb_image gives;
+// old-style runs, which it does not read, are read as Radiance reads them.
 
 #ifndef CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_IO_INTERNAL_READ_RADIANCE_HDR_H
 #define CGAL_PENROSE_DELAUNAY_TRIANGULATION_2_IO_INTERNAL_READ_RADIANCE_HDR_H
 
 #include <CGAL/Penrose_Delaunay_triangulation_2/IO/internal/file_names.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <string>
@@ -37,9 +39,24 @@ inline std::size_t radiance_scanline(const std::string& file, const std::string&
   if(n - at < 4) return std::string::npos;
   flat = flat || w < 8 || w >= 32768 || !(d[at] == 2 && d[at + 1] == 2 && !(d[at + 2] & 0x80));
   if(flat) {
-    if(n - at < 4 * w) return std::string::npos;
-    rgbe.assign(d + at, d + at + 4 * w);
-    return at + 4 * w;
+    // A pixel (1, 1, 1, e) is an old-style run, as Radiance reads it (not
+    // stb_image): the pixel before, e times; e << 8 times after a run, and so on.
+    int shift = 0;
+    for(std::size_t i = 0; i < w;) {
+      if(n - at < 4) return std::string::npos;
+      const unsigned char* p = d + at;
+      at += 4;
+      if(p[0] == 1 && p[1] == 1 && p[2] == 1) {
+        const std::size_t count = shift < 32 ? std::size_t(p[3]) << shift : 0;
+        if(i == 0 || count == 0 || count > w - i) throw file_error(file, "corrupt Radiance HDR old-style run");
+        for(std::size_t k = 0; k < count; ++k, ++i) std::copy_n(&rgbe[4 * (i - 1)], 4, &rgbe[4 * i]);
+        shift += 8;
+      } else {
+        std::copy_n(p, 4, &rgbe[4 * i++]);
+        shift = 0;
+      }
+    }
+    return at;
   }
   if((std::size_t(d[at + 2]) << 8 | d[at + 3]) != w) throw file_error(file, "corrupt Radiance HDR scanline length");
   at += 4;
@@ -58,7 +75,9 @@ inline std::size_t radiance_scanline(const std::string& file, const std::string&
 }
 
 // The header: the signature line, lines up to an empty one, then the
-// resolution "-Y height +X width" (the only orientation that stb_image reads).
+// resolution "-Y height +X width" (the only orientation that stb_image
+// reads). Returns where the pixels start, or std::string::npos if `bytes`
+// end within the header.
 inline std::size_t radiance_header(const std::string& file, const std::string& bytes, std::size_t max_pixels,
                                    Radiance_image& img)
 {
@@ -66,28 +85,32 @@ inline std::size_t radiance_header(const std::string& file, const std::string& b
     return file_error(file, "cannot read as an image (Radiance HDR: " + why + ")");
   };
   std::size_t at = 0;
-  auto line = [&] {
+  auto line = [&](std::string& l) {
     const std::size_t end = bytes.find('\n', at);
-    if(end == std::string::npos) throw fail("truncated header");
-    const std::string l = bytes.substr(at, end - at);
+    if(end == std::string::npos) return false;
+    l = bytes.substr(at, end - at);
     at = end + 1;
-    return l;
+    return true;
   };
-  line();
-  for(std::string l = line(); !l.empty(); l = line())
-    if(l.rfind("FORMAT=", 0) == 0 && l != "FORMAT=32-bit_rle_rgbe") throw fail("unsupported " + l);
-  const std::string r = line();
+  std::string l, r;
+  if(!line(l)) return std::string::npos;
+  for(;;) {
+    if(!line(l)) return std::string::npos;
+    if(l.empty()) break;
+    if(l.rfind("FORMAT=", 0) == 0 && l != "FORMAT=32-bit_rle_rgbe") throw fail("unsupported " + printable(l, 40));
+  }
+  if(!line(r)) return std::string::npos;
   std::size_t k = 0;
   auto number = [&](const char* before) {
     for(const char* c = before; *c; ++c, ++k)
-      if(k == r.size() || r[k] != *c) throw fail("unsupported resolution line '" + r.substr(0, 40) + "'");
+      if(k == r.size() || r[k] != *c) throw fail("unsupported resolution line '" + printable(r, 40) + "'");
     double v = 0.;
     const std::size_t first = k;
     for(; k < r.size() && r[k] >= '0' && r[k] <= '9' && k - first < 12; ++k) v = 10. * v + (r[k] - '0');
     return k == first ? -1. : v;
   };
   const double h = number("-Y "), w = number(" +X ");
-  if(k != r.size()) throw fail("unsupported resolution line '" + r.substr(0, 40) + "'");
+  if(k != r.size()) throw fail("unsupported resolution line '" + printable(r, 40) + "'");
   check_dimensions(file, w, h, max_pixels);
   img.width = std::size_t(w);
   img.height = std::size_t(h);
@@ -100,6 +123,7 @@ inline Radiance_image read_radiance_hdr(const std::string& file, const std::stri
 {
   Radiance_image img;
   std::size_t at = radiance_header(file, bytes, max_pixels, img);
+  if(at == std::string::npos) throw file_error(file, "cannot read as an image (Radiance HDR: truncated header)");
   std::vector<unsigned char> rgbe(4 * img.width);
   bool flat = false;
   for(std::size_t j = 0; j < img.height; ++j) {

@@ -209,8 +209,7 @@ public:
     if(!(imax >= least)) {
       if(bound_) {
         const double cx0 = clamp_x(bx0), cx1 = clamp_x(bx1), cy0 = clamp_y(by0), cy1 = clamp_y(by1);
-        imax = checked(bound_(cx0, cy0, cx1, cy1), 0.5 * (cx0 + cx1), 0.5 * (cy0 + cy1))
-               * importance_per_density_;
+        imax = checked_bound(bound_(cx0, cy0, cx1, cy1), cx0, cy0, cx1, cy1) * importance_per_density_;
       } else {
         imax = this->importance((x[0] + x[1] + x[2]) / 3., (y[0] + y[1] + y[2]) / 3.);
       }
@@ -261,6 +260,12 @@ public:
     throw_bad_density(x, y, v);
   }
 
+  double checked_bound(double v, double x0, double y0, double x1, double y1) const
+  {
+    if(v >= 0. && v < std::numeric_limits<double>::infinity()) return v;
+    throw_bad_bound(x0, y0, x1, y1, v);
+  }
+
 private:
   // the messages are built out of line, to keep the checks of the hot path small
   [[noreturn]] static void throw_bad_density(double x, double y, double v)
@@ -269,6 +274,16 @@ private:
     msg.precision(17);
     msg << "Penrose_importance_sampler: the density at (" << x << ", " << y << ") is " << v
         << "; it must be finite and non-negative";
+    throw std::invalid_argument(msg.str());
+  }
+
+  // the bound, not the density, is wrong: the message names it
+  [[noreturn]] static void throw_bad_bound(double x0, double y0, double x1, double y1, double v)
+  {
+    std::ostringstream msg;
+    msg.precision(17);
+    msg << "Penrose_importance_sampler: density_upper_bound over [" << x0 << ", " << x1 << "] x [" << y0 << ", "
+        << y1 << "] is " << v << "; it must be finite and non-negative";
     throw std::invalid_argument(msg.str());
   }
 
