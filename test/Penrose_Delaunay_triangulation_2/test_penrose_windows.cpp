@@ -7,6 +7,8 @@
 // cuts), the windows give every sample once, and with the border every
 // triangle of CGAL's triangulation once, and its hull.
 
+#include "streamed_ply.h"
+
 #include <CGAL/Penrose_Delaunay_border_2.h>
 #include <CGAL/Penrose_Delaunay_window_2.h>
 #include <CGAL/Penrose_importance_sampler.h>
@@ -19,8 +21,16 @@
 
 #include <gtest/gtest.h>
 
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
+#endif
+
+#include <unistd.h>
+
 #include <algorithm>
 #include <array>
+#include <fstream>
 #include <cmath>
 #include <cstdint>
 #include <iterator>
@@ -192,6 +202,111 @@ void check_densities(std::size_t n)
 }
 
 TEST(PenroseDelaunayWindows, EpickPartitionsAreCgalsTriangulation) { check_densities<Epick>(100000); }
+
+// Without correction vectors the samples are tile vertices, and four of them
+// are often cocircular: every window must break the ties as CGAL does.
+TEST(PenroseDelaunayWindows, CocircularSamplesArePartitionedAsCgalBreaksTies)
+{
+  typedef Epick::Point_2 Point;
+  const CGAL::Penrose_importance_sampler<Epick> sampler(
+    Epick::Iso_rectangle_2(0, 0, 1, 1), [](const Point&) { return 1.; },
+    CGAL::parameters::use_correction_vectors(false, CGAL::parameters::number_of_output_points(40000)));
+  const Reference<Epick> reference(sampler);
+  const CGAL::Penrose_Delaunay_border_2<Epick> border(sampler);
+  expect_border_is_the_hull(border, reference, "lattice");
+  for(int k : {1, 3, 8})
+    expect_partition_is_the_triangulation(sampler, reference, border, grid(0, 1, k), grid(0, 1, k),
+                                          "lattice, " + std::to_string(k) + " x " + std::to_string(k));
+}
+
+// A window computed by a worker whose sampler was given the region's
+// integral is the same, bit for bit, as one of the sampler that measured it.
+TEST(PenroseDelaunayWindows, AWorkersWindowIsTheSame)
+{
+  typedef Epick::Point_2 Point;
+  auto ramp = [](const Point& p) { return 0.05 + p.x(); };
+  const Epick::Iso_rectangle_2 region(0, 0, 1, 1), window(0.3, 0.2, 0.55, 0.7);
+  const CGAL::Penrose_importance_sampler<Epick> whole(region, ramp, CGAL::parameters::number_of_output_points(50000));
+  const CGAL::Penrose_importance_sampler<Epick> worker(
+    region, ramp, CGAL::parameters::density_integral(whole.density_integral(), CGAL::parameters::number_of_output_points(50000)));
+  const CGAL::Penrose_Delaunay_window_2<Epick> a(whole, window), b(worker, window);
+  EXPECT_EQ(a.keys(), b.keys());
+  EXPECT_TRUE(a.points() == b.points());
+  EXPECT_EQ(a.triangles(), b.triangles());
+  EXPECT_GT(a.triangles().size(), 5000u);
+}
+
+// What the density throws in a worker reaches the caller, and a streamed
+// file is then not left behind, half written.
+TEST(PenroseDelaunayWindows, WhatTheDensityThrowsInAWorkerReachesTheCaller)
+{
+  typedef Epick::Point_2 Point;
+  const Epick::Iso_rectangle_2 region(0, 0, 1, 1);
+  auto throwing = [](const Point& p) -> double {
+    if(CGAL::squared_distance(p, Point(0.8, 0.75)) < 0.0025) throw std::runtime_error("no data here");
+    return 1.;
+  };
+  // the integral given, as a worker's: sampling the whole region would throw at once
+  const CGAL::Penrose_importance_sampler<Epick> sampler(
+    region, throwing, CGAL::parameters::density_integral(1., CGAL::parameters::number_of_output_points(100000)));
+  // a window far from it reads the density near itself and at its tiles' ancestors' corners only
+  EXPECT_NO_THROW(CGAL::Penrose_Delaunay_window_2<Epick>(sampler, Epick::Iso_rectangle_2(0, 0, 0.3, 0.3)));
+#ifdef CGAL_LINKED_WITH_TBB
+  EXPECT_THROW(tbb::parallel_for(0, 16, [&](int w) {
+                 const double x = 0.25 * (w % 4), y = 0.25 * (w / 4);
+                 CGAL::Penrose_Delaunay_window_2<Epick>(sampler, Epick::Iso_rectangle_2(x, y, x + 0.25, y + 0.25));
+               }), std::runtime_error);
+#endif
+  const std::string file = testing::TempDir() + "penrose_windows_throwing.ply";
+  std::remove(file.c_str());
+  penrose_tools::Streamed_ply_writer<Epick> writer(sampler, 4000.);
+  EXPECT_THROW(writer.write(file, {}), std::runtime_error);
+  EXPECT_NE(access(file.c_str(), F_OK), 0) << "a failed stream left " << file;
+}
+
+std::string file_bytes(const std::string& name)
+{
+  std::ifstream in(name, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+// The streamed PLY, its windows computed in TBB's tasks and written in
+// order, is the same file on every thread count.
+TEST(PenroseDelaunayWindows, StreamedPlyIsTheSameOnEveryThreadCount)
+{
+  typedef Epick::Point_2 Point;
+  const CGAL::Penrose_importance_sampler<Epick> sampler(
+    Epick::Iso_rectangle_2(0, 0, 2, 1), [](const Point& p) { return 0.05 + p.x() * p.y(); },
+    CGAL::parameters::number_of_output_points(60000));
+  std::string first;
+  for(int threads : {1, 2, 3, 8}) {
+#ifdef CGAL_LINKED_WITH_TBB
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
+#endif
+    const std::string file = testing::TempDir() + "penrose_windows_streamed.ply";
+    const penrose_tools::Streamed_mesh m = penrose_tools::Streamed_ply_writer<Epick>(sampler, 2000.).write(file, {});
+    EXPECT_GT(m.windows, 20u);
+    EXPECT_EQ(m.faces, 2 * m.vertices - CGAL::Penrose_Delaunay_border_2<Epick>(sampler).hull().size() - 2);
+    const std::string bytes = file_bytes(file);
+    if(first.empty()) first = bytes;
+    EXPECT_TRUE(bytes == first) << threads << " threads";
+    std::remove(file.c_str());
+  }
+}
+
+// 10^6 points: about 6 s.
+TEST(PenroseDelaunayWindows, MillionPointPartitionsAreCgalsTriangulation)
+{
+  typedef Epick::Point_2 Point;
+  const CGAL::Penrose_importance_sampler<Epick> sampler(
+    Epick::Iso_rectangle_2(0, 0, 1, 1), [](const Point& p) { return p.x(); }, CGAL::parameters::number_of_output_points(1000000));
+  const Reference<Epick> reference(sampler);
+  const CGAL::Penrose_Delaunay_border_2<Epick> border(sampler);
+  expect_border_is_the_hull(border, reference, "ramp 10^6");
+  for(int k : {1, 4, 16})
+    expect_partition_is_the_triangulation(sampler, reference, border, grid(0, 1, k), grid(0, 1, k),
+                                          "ramp 10^6, " + std::to_string(k) + " x " + std::to_string(k));
+}
 
 TEST(PenroseDelaunayWindows, EpeckPartitionsAreCgalsTriangulation)
 {
