@@ -7,8 +7,10 @@
 # --quick:   sizes up to 10^5 (under a minute); default: 10^3 to 4 x 10^6.
 # --out:     where results.csv, the plots and the quality report go (default benchmark-results).
 # --scaling: measure the speed-up of Parallel_tag against the number of
-#            threads (scaling.csv, scaling.png) even on 2 cores; it is
-#            measured anyway on a machine with more than 2. Its sizes are
+#            threads (scaling.csv, scaling.png), and the windowed
+#            construction against threads and windows (windows.csv,
+#            windows.png), even on 2 cores; they are
+#            measured anyway on a machine with more than 2. Their sizes are
 #            SCALING_SIZES (default "1000000 10000000"; 10^8 needs about
 #            25 GB).
 # The last full run's results.csv, ratios.md and quality summaries are kept in
@@ -196,6 +198,38 @@ set grid
 plot $plot, x with lines dashtype 2 title 'linear'
 EOF
   rm -f "$out"/.scaling.*.dat
+
+  # the windowed construction (window_benchmark speed): K x K windows and the
+  # border in TBB tasks, its ratio to CGAL's range insertion against threads
+  echo "N,windows,threads,ratio_to_cgal" > "$out/windows.csv"
+  for n in ${SCALING_SIZES:-1000000 10000000}; do
+    for k in 1 2 4 8 16 32; do
+      for t in 1 2 4 8 16 32 64; do
+        [ "$t" -le "$(nproc)" ] || break
+        ratio=$("$bin/window_benchmark" speed "$n" ramp "$k" 3 "$t" | awk '/ratio/ {print $NF}')
+        echo "$n,$((k * k)),$t,$ratio" | tee -a "$out/windows.csv"
+      done
+    done
+  done
+  plot=""
+  for n in ${SCALING_SIZES:-1000000 10000000}; do
+    for k in 1 4 16 64 256 1024; do
+      awk -F, -v n="$n" -v k="$k" '$1 == n && $2 == k { print $3, $4 }' "$out/windows.csv" > "$out/.windows.$n.$k.dat"
+      plot="$plot${plot:+, }'$out/.windows.$n.$k.dat' using 1:2 with linespoints title '$n points, $k windows'"
+    done
+  done
+  gnuplot <<EOF
+set terminal pngcairo size 900,600 noenhanced
+set output '$out/windows.png'
+set title 'Windows and the border in TBB tasks: time against CGAL range insertion, ramp density, $(nproc) cores'
+set logscale xy 2
+set xlabel 'threads (tbb::global_control)'
+set ylabel 'time / CGAL range insertion (one thread)'
+set key top right
+set grid
+plot $plot
+EOF
+  rm -f "$out"/.windows.*.dat
 fi
 
-echo "results: $out/check.txt, $csv, $out/ratios.md, $out/*.png, $out/quality_*_summary.txt$([ $scaling = 1 ] && echo ", $out/scaling.csv, $out/scaling.png")"
+echo "results: $out/check.txt, $csv, $out/ratios.md, $out/*.png, $out/quality_*_summary.txt$([ $scaling = 1 ] && echo ", $out/scaling.csv, $out/scaling.png, $out/windows.csv, $out/windows.png")"
