@@ -13,6 +13,7 @@
 // milliseconds.
 
 #define PENROSE_MESH_NO_MAIN  // penrose_mesh() is called here
+#include "command_line_arguments.h"
 #include "penrose_mesh.cpp"
 
 #include <unistd.h>
@@ -109,19 +110,12 @@ extern "C" int LLVMFuzzerInitialize(int*, char***)
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
 {
-  std::vector<std::string> arguments{"penrose_mesh"};
-  const std::string text(reinterpret_cast<const char*>(data), size);
-  for(std::size_t at = 0; at <= text.size();) {
-    const std::size_t end = std::min(text.find('\n', at), text.size());
-    arguments.push_back(text.substr(at, end - at));
-    if(!stays_inside(arguments.back())) return 0;
-    at = end + 1;
-  }
-  std::vector<const char*> argv;
-  for(const std::string& a : arguments) argv.push_back(a.c_str());
+  const Command_line c(data, size);
+  for(const std::string& a : c.arguments)
+    if(!stays_inside(a)) return 0;
   Options o;
   try {
-    o = penrose_tools::parse(int(argv.size()), argv.data());
+    o = penrose_tools::parse(int(c.argv.size()), c.argv.data());
   } catch(const penrose_tools::Usage_error&) {
   }
   if(!(o.points > 0. && o.points <= 10000.) || o.tiles > 4 || (o.streamed && o.points > 64. * o.window_points))
@@ -136,7 +130,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   std::ostringstream discarded;
   std::streambuf* const err = std::cerr.rdbuf(discarded.rdbuf());
   std::streambuf* const out = std::cout.rdbuf(discarded.rdbuf());
-  const int status = penrose_mesh(int(argv.size()), argv.data());
+  const int status = penrose_mesh(int(c.argv.size()), c.argv.data());
   std::cerr.rdbuf(err);
   std::cout.rdbuf(out);
   fs::current_path(home);

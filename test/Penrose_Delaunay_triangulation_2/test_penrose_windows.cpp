@@ -203,6 +203,18 @@ void check_densities(std::size_t n)
 
 TEST(PenroseDelaunayWindows, EpickPartitionsAreCgalsTriangulation) { check_densities<Epick>(100000); }
 
+// The sampler of the unit square against CGAL, on k x k windows for each k.
+void check_square_grids(const CGAL::Penrose_importance_sampler<Epick>& sampler, const std::string& what,
+                        std::initializer_list<int> ks)
+{
+  const Reference<Epick> reference(sampler);
+  const CGAL::Penrose_Delaunay_border_2<Epick> border(sampler);
+  expect_border_is_the_hull(border, reference, what);
+  for(int k : ks)
+    expect_partition_is_the_triangulation(sampler, reference, border, grid(0, 1, k), grid(0, 1, k),
+                                          what + ", " + std::to_string(k) + " x " + std::to_string(k));
+}
+
 // Without correction vectors the samples are tile vertices, and four of them
 // are often cocircular: every window must break the ties as CGAL does.
 TEST(PenroseDelaunayWindows, CocircularSamplesArePartitionedAsCgalBreaksTies)
@@ -211,12 +223,7 @@ TEST(PenroseDelaunayWindows, CocircularSamplesArePartitionedAsCgalBreaksTies)
   const CGAL::Penrose_importance_sampler<Epick> sampler(
     Epick::Iso_rectangle_2(0, 0, 1, 1), [](const Point&) { return 1.; },
     CGAL::parameters::use_correction_vectors(false, CGAL::parameters::number_of_output_points(40000)));
-  const Reference<Epick> reference(sampler);
-  const CGAL::Penrose_Delaunay_border_2<Epick> border(sampler);
-  expect_border_is_the_hull(border, reference, "lattice");
-  for(int k : {1, 3, 8})
-    expect_partition_is_the_triangulation(sampler, reference, border, grid(0, 1, k), grid(0, 1, k),
-                                          "lattice, " + std::to_string(k) + " x " + std::to_string(k));
+  check_square_grids(sampler, "lattice", {1, 3, 8});
 }
 
 // A window computed by a worker whose sampler was given the region's
@@ -300,12 +307,7 @@ TEST(PenroseDelaunayWindows, MillionPointPartitionsAreCgalsTriangulation)
   typedef Epick::Point_2 Point;
   const CGAL::Penrose_importance_sampler<Epick> sampler(
     Epick::Iso_rectangle_2(0, 0, 1, 1), [](const Point& p) { return p.x(); }, CGAL::parameters::number_of_output_points(1000000));
-  const Reference<Epick> reference(sampler);
-  const CGAL::Penrose_Delaunay_border_2<Epick> border(sampler);
-  expect_border_is_the_hull(border, reference, "ramp 10^6");
-  for(int k : {1, 4, 16})
-    expect_partition_is_the_triangulation(sampler, reference, border, grid(0, 1, k), grid(0, 1, k),
-                                          "ramp 10^6, " + std::to_string(k) + " x " + std::to_string(k));
+  check_square_grids(sampler, "ramp 10^6", {1, 4, 16});
 }
 
 TEST(PenroseDelaunayWindows, EpeckPartitionsAreCgalsTriangulation)
