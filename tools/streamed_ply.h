@@ -32,7 +32,6 @@
 #include <CGAL/Penrose_Delaunay_triangulation_2/IO/internal/output_file.h>
 
 #ifdef CGAL_LINKED_WITH_TBB
-#include <tbb/parallel_pipeline.h>
 #include <tbb/task_arena.h>
 #endif
 
@@ -49,6 +48,7 @@
 #include <functional>
 #include <limits>
 #include <map>
+#include <optional>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -190,26 +190,36 @@ private:
   }
 
   // Computes the windows, in parallel where TBB is linked, and hands them
-  // to `write` one after the other, in order.
+  // to `write` one after the other, in order: a batch of windows, four a
+  // thread, is computed in TBB's tasks while the calling thread writes the
+  // batch before it (fewer make the threads wait at each batch's end).
   template <class Write>
   void for_each_window_in_order(const Write& write)
   {
-    const std::size_t n = number_of_windows();
+    using CGAL::internal::Penrose::for_each_block;
+    using CGAL::internal::Penrose::run_beside;
 #ifdef CGAL_LINKED_WITH_TBB
-    std::size_t next = 0;
-    const std::size_t tokens = 2 * std::size_t(tbb::this_task_arena::max_concurrency());
-    tbb::parallel_pipeline(tokens,
-      tbb::make_filter<void, std::size_t>(tbb::filter_mode::serial_in_order, [&](tbb::flow_control& fc) {
-        if(next == n) { fc.stop(); return std::size_t(0); }
-        return next++;
-      }) &
-      tbb::make_filter<std::size_t, std::pair<std::size_t, std::shared_ptr<Window>>>(tbb::filter_mode::parallel,
-        [&](std::size_t id) { return std::make_pair(id, std::make_shared<Window>(s_, rectangle(id))); }) &
-      tbb::make_filter<std::pair<std::size_t, std::shared_ptr<Window>>, void>(tbb::filter_mode::serial_in_order,
-        [&](const std::pair<std::size_t, std::shared_ptr<Window>>& w) { write(w.first, *w.second); }));
+    typedef CGAL::Parallel_tag Tag;
+    const std::size_t batch = 4 * std::size_t(tbb::this_task_arena::max_concurrency());
 #else
-    for(std::size_t id = 0; id < n; ++id) write(id, Window(s_, rectangle(id)));
+    typedef CGAL::Sequential_tag Tag;
+    const std::size_t batch = 1;
 #endif
+    const std::size_t n = number_of_windows();
+    auto make = [&](std::size_t first, std::vector<std::optional<Window>>& made) {
+      made.clear();
+      made.resize(first < n ? (std::min)(batch, n - first) : 0);
+      for_each_block<Tag>(made.size(), 1, [&](std::size_t b, std::size_t e) {
+        for(std::size_t k = b; k < e; ++k) made[k].emplace(s_, rectangle(first + k));
+      });
+    };
+    std::vector<std::optional<Window>> current, next;
+    make(0, current);
+    for(std::size_t first = 0; first < n; first += batch) {
+      run_beside<Tag>([&] { make(first + batch, next); },
+                      [&] { for(std::size_t k = 0; k < current.size(); ++k) write(first + k, *current[k]); });
+      current.swap(next);
+    }
   }
 
   // Notes which windows the vertices of `triangles` (positions in
