@@ -32,6 +32,7 @@
 #include <cstdint>
 #include <exception>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <new>
 #include <optional>
@@ -68,6 +69,7 @@ struct Request
   std::optional<std::array<double, 4>> window;  // the part of the region sampled, if not all of it
   long long threads = 1;                         // 1: Sequential_tag; 0: as many as TBB allows
   std::optional<double> integral;                // of the density over the region, if known
+  std::size_t most_points = 100000000;           // of the region: a window holds its part only
 };
 
 void check_rectangle(const char* name, const std::array<double, 4>& r)
@@ -117,7 +119,7 @@ std::unique_ptr<Sampler> make_sampler_integrated(const Request& r, const Density
 std::unique_ptr<Sampler> make_sampler(const Request& r, const Density& d)
 {
   using namespace CGAL::parameters;
-  const auto np = use_correction_vectors(r.correction).density_control_factor(r.scale);
+  const auto np = use_correction_vectors(r.correction).density_control_factor(r.scale).maximum_number(r.most_points);
   if(r.n) return make_sampler_integrated(r, d, np.number_of_output_points(*r.n));
   return make_sampler_integrated(r, d, np);
 }
@@ -483,6 +485,8 @@ py::tuple window_triangles(const py::object& density, const std::optional<std::a
   if(!(margin >= 0. && std::isfinite(margin))) throw std::invalid_argument("margin must be finite and non-negative");
   r.window = window;
   r.integral = integral;
+  // a window's construction checks what it can hold (MemoryError beyond)
+  r.most_points = std::numeric_limits<std::size_t>::max();
   Piece p = with_density(density, region, r, true, [&](const Density& d) {
     const bool with_border = border.value_or(!window || holds_lower_left_corner(r.region, *window));
     return window_piece(r, d, with_border, margin);

@@ -126,3 +126,13 @@ def test_dask_gives_the_in_process_triangulation(client, tmp_path, density):
     assert len(t) == 2 * len(p) - len(h) - 2
     assert np.all(signed_areas(p, t) > 0)
     assert point_triangles(p, t) == point_triangles(points, triangles)
+
+
+def test_a_window_of_a_region_larger_than_one_process():
+    """triangulate() refuses 2 x 10^8 points; a window of them holds its part only."""
+    with pytest.raises(MemoryError):
+        pd.triangulate(1.0, n=200_000_000)
+    integral = pd.density_integral(1.0)
+    p, k, t = pd.window_triangles(1.0, n=200_000_000, window=(0.5, 0.5, 0.51, 0.51), integral=integral, border=False)
+    assert 19000 < len(p) < 21000
+    assert len(t) > 1.9 * len(p)
