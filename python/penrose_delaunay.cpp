@@ -600,6 +600,8 @@ integral: the integral of the density over the region, as
    same. Workers that share one get the same points.
 margin: the first margin around the window, in the region's units (0: from
    the density); it grows where the triangles cannot be certified.
+n may exceed the 10^8 of sample() and triangulate(): a window holds its part
+   only (MemoryError if that outgrows the memory).
 foreign: also return, after those three, the other vertices of the
    triangles (points (K, 2), keys (K,)), the keys of the convex hull,
    counter-clockwise, where the border was computed, and the triangles as
