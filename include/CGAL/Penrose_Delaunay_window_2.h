@@ -57,8 +57,12 @@ Vertices are named by their samples' `key`, the same in every window and
 process: a triangle is three keys, and a driver numbers the samples as it
 likes (for instance window after window, by key within each window).
 
-The density is read near the grown window, and at the corners of the
-ancestors of its tiles: a few tens of calls outside it.
+The density is read in the grown window, in a band about a tile wide around
+it (where tiles that straddle its sides are subdivided) and at the corners
+of the ancestors of its tiles: outside the grown window, about as many calls
+as in the margin, growing with the window's perimeter (11,136 against
+369,981 in the window for a window of 78,183 of 10<sup>6</sup> ramp points;
+see the user manual).
 
 \tparam Traits the traits of the sampler.
 */
