@@ -102,7 +102,7 @@ public:
   // The bytes the file will take, about.
   double expected_bytes() const
   {
-    return s_.expected_number_of_points() * (16. + 2. * (1. + (wide_ ? 24. : 12.))) + 4096.;
+    return s_.expected_number_of_points() * (16. + 2. * double(face_bytes())) + 4096.;
   }
 
   // Writes the PLY to `path`; `progress(f)` is called from the calling
@@ -129,6 +129,9 @@ public:
   }
 
 private:
+  // A face's record: its count of vertices, then three indices.
+  std::size_t face_bytes() const { return 1 + 3 * (wide_ ? 8 : 4); }
+
   void check_free_space(const std::string& path) const
   {
     const std::size_t slash = path.find_last_of('/');
@@ -137,7 +140,7 @@ private:
     if(statvfs(folder.c_str(), &fs) != 0) return;  // the writes will say
     const double available = double(fs.f_bavail) * double(fs.f_frsize);
     // the faces are written beside the vertices, then appended: they take their room twice for a while
-    const double needed = 1.05 * (expected_bytes() + s_.expected_number_of_points() * 2. * (wide_ ? 25. : 13.));
+    const double needed = 1.05 * (expected_bytes() + s_.expected_number_of_points() * 2. * double(face_bytes()));
     if(needed > available) {
       char msg[160];
       std::snprintf(msg, sizeof msg, ": about %.3g GB needed while it is written, %.3g GB free there", needed / 1e9,
@@ -287,7 +290,7 @@ private:
       number[n + j] = owner_of[j] < id ? number_in(owner_of[j], foreign[j].first) : awaited;
     }
     std::vector<unsigned char> records;
-    records.reserve(w.triangles().size() * (wide_ ? 25 : 13));
+    records.reserve(w.triangles().size() * face_bytes());
     for(std::size_t t = 0; t < w.triangles().size(); ++t) {
       const auto& local = w.triangle_indices()[t];
       if(number[local[0]] != awaited && number[local[1]] != awaited && number[local[2]] != awaited) {

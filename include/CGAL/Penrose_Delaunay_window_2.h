@@ -105,17 +105,7 @@ public:
     using parameters::choose_parameter;
     using parameters::get_parameter;
     const internal::Penrose::Sampling_context& c = internal::Penrose::Sampler_access::context(sampler);
-    auto vertex = sampler.geom_traits().construct_vertex_2_object();
-    auto xy = [&](int i) {
-      const Point_2 p = vertex(window, i);
-      return std::make_pair(CGAL::to_double(sampler.geom_traits().compute_x_2_object()(p)),
-                            CGAL::to_double(sampler.geom_traits().compute_y_2_object()(p)));
-    };
-    const auto [x0, y0] = xy(0);
-    const auto [x1, y1] = xy(2);
-    if(!(std::isfinite(x0) && std::isfinite(y0) && std::isfinite(x1) && std::isfinite(y1) && x0 <= x1 && y0 <= y1))
-      throw std::invalid_argument("Penrose_Delaunay_window_2: the window is not finite, or its corners are not in order");
-    const internal::Penrose::Sample_window own = c.window(x0, y0, x1, y1);
+    const internal::Penrose::Sample_window own = internal::Penrose::Sampler_access::window(sampler, window);
     if(own.is_empty()) return;
     const double margin = choose_parameter(get_parameter(np, Penrose_np::window_margin), 0.);
     if(!(margin >= 0. && margin < std::numeric_limits<double>::infinity()))

@@ -21,6 +21,8 @@
 //     it, against CGAL's triangulation of the points around it (for files
 //     too large to triangulate whole). Exits with status 1 if not.
 
+#include <CGAL/Penrose_Delaunay_triangulation_2/internal/windows/Canonical_circumcircle.h>
+
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/IO/OFF.h>
@@ -158,12 +160,12 @@ Face rotated(Face f)
   return f;
 }
 
-// The circumcentre, or NaN for a flat triangle.
+// The circumcentre as the windows compute it, or NaN for a flat triangle.
 std::array<double, 2> circumcentre(const K2::Point_2& a, const K2::Point_2& b, const K2::Point_2& c)
 {
-  const double bx = b.x() - a.x(), by = b.y() - a.y(), cx = c.x() - a.x(), cy = c.y() - a.y();
-  const double d = 2. * (bx * cy - by * cx), b2 = bx * bx + by * by, c2 = cx * cx + cy * cy;
-  return {a.x() + (cy * b2 - by * c2) / d, a.y() + (bx * c2 - cx * b2) / d};
+  using CGAL::internal::Penrose::Xy;
+  const auto cc = CGAL::internal::Penrose::canonical_circumcircle(Xy{a.x(), a.y()}, Xy{b.x(), b.y()}, Xy{c.x(), c.y()});
+  return {cc.x, cc.y};
 }
 
 struct Ply_reader

@@ -24,6 +24,13 @@ struct Sampler_access
   template <class Traits>
   static typename Penrose_importance_sampler<Traits>::Sample
   sample(const Penrose_importance_sampler<Traits>& s, const Placed_sample& p) { return s.to_sample(p); }
+
+  // `window` in the sampler's terms, checked as its operator()(window, out) checks it.
+  template <class Traits>
+  static Sample_window window(const Penrose_importance_sampler<Traits>& s, const typename Traits::Iso_rectangle_2& window)
+  {
+    return s.sample_window(window);
+  }
 };
 
 } // namespace Penrose
